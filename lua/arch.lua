@@ -1,0 +1,69 @@
+-- arch.lua - a circular arch of n voussoirs with radial joints.
+--
+-- arch{ n = 21, radius = R (of the centre line) or span = S, thickness = t,
+--       angle = 180 (opening, degrees), centre = {x, y} }
+-- The arch is symmetric about the vertical through the centre; voussoirs are
+-- quadrilaterals between consecutive radial joints; each end joint rests on
+-- a fixed springing block.  Returns the voussoir numbers and the springings.
+return function(M)
+  local allowed = { n = true, radius = true, span = true, thickness = true, angle = true,
+                    centre = true, density = true }
+  local function fail(msg) error("arch: " .. msg, 3) end
+  local function positive(t, k)
+    local v = t[k]
+    if type(v) ~= "number" or not (v > 0) or v == math.huge then
+      fail(("field '%s' must be a positive number, got %s"):format(k, tostring(v)))
+    end
+    return v
+  end
+
+  return function(t)
+    if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
+    for k in pairs(t) do
+      if not allowed[k] then
+        fail(("unknown field '%s' (fields: angle, centre, density, n, radius, span, thickness)")
+          :format(tostring(k)))
+      end
+    end
+    local n = t.n
+    if math.type(n) ~= "integer" or n < 1 then
+      fail("field 'n' must be a positive integer (the number of voussoirs), got " .. tostring(n))
+    end
+    local angle = t.angle or 180
+    if type(angle) ~= "number" or not (angle > 0 and angle <= 360) then
+      fail("field 'angle' must be an opening angle in degrees in (0, 360]")
+    end
+    local half = math.rad(angle) / 2
+    local R
+    if t.radius and t.span then fail("give either 'radius' or 'span', not both") end
+    if t.radius then
+      R = positive(t, "radius")
+    elseif t.span then
+      R = positive(t, "span") / (2 * math.sin(half))
+    else
+      fail("field 'radius' or 'span' is missing")
+    end
+    local th = positive(t, "thickness")
+    if th >= 2 * R then fail("field 'thickness' must be less than the diameter of the centre line") end
+    local c = t.centre or { 0, 0 }
+    local ri, ro = R - th / 2, R + th / 2
+    local function at(r, a) return { c[1] + r * math.cos(a), c[2] + r * math.sin(a) } end
+    local a0 = math.pi / 2 + half -- left springing
+    local blocks = {}
+    for i = 0, n - 1 do
+      local a, b = a0 - 2 * half * i / n, a0 - 2 * half * (i + 1) / n
+      blocks[#blocks + 1] = M.block { vertices = { at(ri, a), at(ro, a), at(ro, b), at(ri, b) },
+                                      density = t.density }
+    end
+    -- Springings continue each end joint along the arch's tangent, away from it.
+    local springs = {}
+    for _, e in ipairs { { a0, 1 }, { a0 - 2 * half, -1 } } do
+      local a, s = e[1], e[2]
+      local tx, ty = -math.sin(a) * s * th, math.cos(a) * s * th
+      local p, q = at(ri, a), at(ro, a)
+      springs[#springs + 1] = M.block { vertices = { p, q, { q[1] + tx, q[2] + ty },
+                                                     { p[1] + tx, p[2] + ty } }, support = true }
+    end
+    return blocks, springs
+  end
+end

@@ -1,0 +1,63 @@
+-- blocklim.lua - the Lua half of the blocklim module: the current model and
+-- the global commands of the DSL (doc/guide.md).  The C core (passed in as
+-- `core`) does the checking and the numerics; this file only routes calls.
+return function(core)
+  local M = {}
+  local report = require "blocklim.report"
+  local methods = core.model_methods
+  local current
+
+  -- Results get the report metatable: print(r), r:svg(file), r:png(file).
+  local solve = methods.solve
+  function methods.solve(m, t)
+    local r = solve(m, t)
+    return setmetatable(r, report.Result)
+  end
+  report.draw = core.draw
+
+  function M.model(t)
+    current = core.model(t or {})
+    return current
+  end
+
+  function M.current()
+    return current
+  end
+
+  local function need(fn)
+    if not current then
+      error(fn .. ": no current model; start one with model{ mu = 0.65 }", 3)
+    end
+    return current
+  end
+
+  for _, name in ipairs { "block", "contacts", "interface", "load", "solve", "stats" } do
+    M[name] = function(t)
+      return methods[name](need(name), t)
+    end
+  end
+
+  -- load{...} is the DSL's; load("chunk") and load(fn) stay Lua's own.
+  local lua_load, dsl_load = load, M.load
+  function M.load(t, ...)
+    if type(t) == "table" then return dsl_load(t) end
+    return lua_load(t, ...)
+  end
+
+  M.wall = require("blocklim.wall")(M)
+  M.arch = require("blocklim.arch")(M)
+
+  M.version = "0.1"
+
+  -- The names the program puts into _G (a script that requires the module
+  -- from a stock Lua may do the same: require("blocklim").globals()).
+  local exported = { "model", "block", "contacts", "interface", "load", "solve",
+                     "stats", "wall", "arch", "current" }
+  function M.globals(env)
+    env = env or _G
+    for _, n in ipairs(exported) do env[n] = M[n] end
+    return M
+  end
+
+  return M
+end

@@ -1,0 +1,69 @@
+-- report.lua - how a result reads: print(r), r:svg(file), r:png(file).
+local report = {}
+
+local Result = {}
+Result.__index = Result
+report.Result = Result
+
+local function g(x)
+  return ("%.3g"):format(x)
+end
+
+function Result.__tostring(r)
+  local out = {}
+  local function say(fmt, ...) out[#out + 1] = fmt:format(...) end
+  local size = r.size
+  if r.status == "optimal" or r.status == "unstable" then
+    say("alpha = %.6g  (%s, %s)", r.alpha, r.status, r.verified and "verified" or "NOT verified")
+  else
+    say("no alpha  (%s)", r.status)
+  end
+  say("  %s", r.message)
+  say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
+      r.lp, r.iterations, size.rows, size.columns)
+  local line = ("  %d blocks, %d supports, %d interfaces"):format(size.blocks, size.supports,
+                                                                   size.interfaces)
+  if r.states then
+    local s = r.states
+    line = line .. (": %d closed, %d rocking, %d sliding, %d separating")
+      :format(s.closed, s.rocking, s.sliding, s.separating)
+  end
+  out[#out + 1] = line
+  if r.residuals then
+    local e = r.residuals
+    say("  residuals (scaled, tolerance %s): equilibrium %s, yield %s, admissibility %s,",
+        g(r.tolerance), g(e.equilibrium), g(e.yield), g(e.admissibility))
+    say("    complementarity %s, normalization %s, work %s", g(e.complementarity),
+        g(e.normalization), g(e.work))
+  end
+  local t = r.timings
+  say("  time %.3f s: detection %.3f, assembly %.3f, solve %.3f, verification %.3f", t.total,
+      t.detection, t.assembly, t.solve, t.verification)
+  return table.concat(out, "\n")
+end
+
+local function picture(fmt)
+  return function(r, file, opts)
+    if type(file) ~= "string" then
+      error(("%s: expects a file name, got %s"):format(fmt, type(file)), 2)
+    end
+    local width
+    if opts ~= nil then
+      if type(opts) ~= "table" then error(fmt .. ": options must be a table { width = ... }", 2) end
+      for k in pairs(opts) do
+        if k ~= "width" then error(("%s: unknown field '%s' (fields: width)"):format(fmt, k), 2) end
+      end
+      width = opts.width
+      if width ~= nil and (math.type(width) ~= "integer" or width < 100 or width > 20000) then
+        error(fmt .. ": field 'width' must be an integer from 100 to 20000", 2)
+      end
+    end
+    report.draw(r._solution, file, fmt, width)
+    return r
+  end
+end
+
+Result.svg = picture("svg")
+Result.png = picture("png")
+
+return report

@@ -1,0 +1,72 @@
+-- wall.lua - the wall generator: courses of blocks from course patterns.
+--
+-- wall{ courses = { {.5, 1, 1, .5}, {1, -1, 1}, ... }, unit = {L, H} }
+-- Courses go bottom first; an entry is a block length in units of L, a
+-- negative entry a gap of that length.  The bottom course sits on y = y0
+-- (default 0) and every course starts at x = x0 (default 0).  A fixed base
+-- block of height H spans the widest course unless base = false.
+-- Returns the list of block numbers, bottom course first, and the base.
+return function(M)
+  local allowed = { courses = true, unit = true, base = true, origin = true,
+                    density = true, thickness = true }
+  local function fail(msg) error("wall: " .. msg, 3) end
+
+  return function(t)
+    if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
+    for k in pairs(t) do
+      if not allowed[k] then
+        fail(("unknown field '%s' (fields: base, courses, density, origin, thickness, unit)")
+          :format(tostring(k)))
+      end
+    end
+    local courses, unit = t.courses, t.unit or { 0.4, 0.175 }
+    if type(courses) ~= "table" or #courses == 0 then
+      fail("field 'courses' must be a non-empty list of course patterns")
+    end
+    if type(unit) ~= "table" or type(unit[1]) ~= "number" or type(unit[2]) ~= "number"
+        or not (unit[1] > 0 and unit[2] > 0) then
+      fail("field 'unit' must be {L, H} with two positive numbers")
+    end
+    local origin = t.origin or { 0, 0 }
+    if type(origin) ~= "table" or type(origin[1]) ~= "number" or type(origin[2]) ~= "number" then
+      fail("field 'origin' must be a point {x, y}")
+    end
+    local L, H, x0, y0 = unit[1], unit[2], origin[1], origin[2]
+    -- Check every entry before the first block is made.
+    local width = 0
+    for c, course in ipairs(courses) do
+      if type(course) ~= "table" or #course == 0 then
+        fail(("field 'courses' entry %d must be a non-empty list of lengths"):format(c))
+      end
+      local len = 0
+      for e, v in ipairs(course) do
+        if type(v) ~= "number" or v == 0 or v ~= v then
+          fail(("field 'courses' course %d entry %d must be a non-zero length, got %s")
+            :format(c, e, tostring(v)))
+        end
+        len = len + math.abs(v)
+      end
+      width = math.max(width, len)
+    end
+    local blocks = {}
+    local opts = { density = t.density, thickness = t.thickness }
+    for c, course in ipairs(courses) do
+      local x, y = 0, (c - 1) * H
+      for _, v in ipairs(course) do
+        if v > 0 then
+          blocks[#blocks + 1] = M.block {
+            vertices = { { x0 + x * L, y0 + y }, { x0 + (x + v) * L, y0 + y },
+                         { x0 + (x + v) * L, y0 + y + H }, { x0 + x * L, y0 + y + H } },
+            density = opts.density, thickness = opts.thickness }
+        end
+        x = x + math.abs(v)
+      end
+    end
+    local base
+    if t.base ~= false then
+      base = M.block { vertices = { { x0, y0 - H }, { x0 + width * L, y0 - H },
+                                    { x0 + width * L, y0 }, { x0, y0 } }, support = true }
+    end
+    return blocks, base
+  end
+end

@@ -1,0 +1,231 @@
+#include "assemble.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void bl_system_free(bl_system *s)
+{
+    if (!s) return;
+    free(s->colptr);
+    free(s->rowind);
+    free(s->val);
+    free(s->lo);
+    free(s->hi);
+    free(s->rhs);
+    free(s->obj);
+    free(s->block_row);
+    free(s->col_point);
+    free(s->col_kind);
+    free(s->col_nt);
+    free(s);
+}
+
+/* Columns at one contact point of interface k. */
+static int point_columns(const bl_interface *k, double C, bl_column_kind kind[3])
+{
+    int n = 0;
+    if (isinf(k->mu)) {
+        kind[n++] = BL_COL_NORMAL;
+        kind[n++] = BL_COL_SHEAR;
+        return n;
+    }
+    if (k->mu == 0.0) {
+        kind[n++] = BL_COL_NORMAL;
+    } else {
+        kind[n++] = BL_COL_CONE_POS;
+        kind[n++] = BL_COL_CONE_NEG;
+    }
+    if (C > 0.0) kind[n++] = BL_COL_COHESION;
+    return n;
+}
+
+/* Cohesive shear capacity of one contact point: half the joint's area. */
+static double cohesion_share(const bl_model *m, const bl_interface *k)
+{
+    double len = bl_v2_norm(bl_v2_sub(k->p[1], k->p[0]));
+    double th = fmin(m->blocks[k->a].thickness, m->blocks[k->b].thickness);
+    return k->cohesion * len * th / 2.0;
+}
+
+bl_system *bl_system_build(const bl_model *m, bl_error *err)
+{
+    bl_system *s = calloc(1, sizeof *s);
+    if (!s) goto oom;
+    int nb = m->nblocks, nfree = 0;
+    double wsum = 0.0, lsum = 0.0;
+    s->block_row = malloc((size_t)(nb ? nb : 1) * sizeof *s->block_row);
+    if (!s->block_row) goto oom;
+    for (int i = 0; i < nb; i++) {
+        const bl_block *b = &m->blocks[i];
+        s->block_row[i] = b->support ? -1 : 3 * nfree++;
+        if (!b->support) wsum += b->weight;
+        lsum += sqrt(b->area);
+    }
+    if (nfree == 0) {
+        bl_system_free(s);
+        bl_error_set(err, "solve: the model has no free block");
+        return NULL;
+    }
+    s->W0 = wsum / nfree;
+    s->L0 = lsum / nb;
+    s->nrows = 3 * nfree;
+
+    int nforce = 0;
+    bl_column_kind kind[3];
+    for (int k = 0; k < m->ninterfaces; k++)
+        nforce += 2 * point_columns(&m->interfaces[k], cohesion_share(m, &m->interfaces[k]), kind);
+    s->nforce = nforce;
+    s->ncols = nforce + 1;
+    size_t nc = (size_t)s->ncols, nnz_max = 6 * (size_t)nforce + (size_t)s->nrows;
+    s->colptr = malloc((nc + 1) * sizeof *s->colptr);
+    s->rowind = malloc(nnz_max * sizeof *s->rowind);
+    s->val = malloc(nnz_max * sizeof *s->val);
+    s->lo = malloc(nc * sizeof *s->lo);
+    s->hi = malloc(nc * sizeof *s->hi);
+    s->obj = calloc(nc, sizeof *s->obj);
+    s->rhs = calloc((size_t)s->nrows, sizeof *s->rhs);
+    s->col_point = malloc(nc * sizeof *s->col_point);
+    s->col_kind = malloc(nc * sizeof *s->col_kind);
+    s->col_nt = malloc(2 * nc * sizeof *s->col_nt);
+    double *fL = calloc((size_t)s->nrows, sizeof *fL);
+    if (!s->colptr || !s->rowind || !s->val || !s->lo || !s->hi || !s->obj || !s->rhs ||
+        !s->col_point || !s->col_kind || !s->col_nt || !fL) {
+        free(fL);
+        goto oom;
+    }
+
+    int c = 0, nz = 0;
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        double C = cohesion_share(m, in) / s->W0;
+        int nk = point_columns(in, C, kind);
+        bl_vec2 nu = in->normal, tau = bl_v2(-nu.y, nu.x);
+        for (int e = 0; e < 2; e++) {
+            for (int q = 0; q < nk; q++, c++) {
+                double dn = 1.0, dt = 0.0, lo = 0.0, hi = INFINITY;
+                switch (kind[q]) {
+                case BL_COL_CONE_POS: dt = in->mu; break;
+                case BL_COL_CONE_NEG: dt = -in->mu; break;
+                case BL_COL_NORMAL: break;
+                case BL_COL_SHEAR: dn = 0.0; dt = 1.0; lo = -INFINITY; break;
+                case BL_COL_COHESION: dn = 0.0; dt = 1.0; lo = -C; hi = C; break;
+                }
+                bl_vec2 f = bl_v2_add(bl_v2_scale(nu, dn), bl_v2_scale(tau, dt));
+                s->colptr[c] = nz;
+                s->lo[c] = lo;
+                s->hi[c] = hi;
+                s->col_point[c] = 2 * k + e;
+                s->col_kind[c] = (signed char)kind[q];
+                s->col_nt[2 * c] = dn;
+                s->col_nt[2 * c + 1] = dt;
+                /* f acts on b; -f on a.  Rows of a block in order x, y, moment. */
+                int blk[2] = {in->a, in->b};
+                for (int side = 0; side < 2; side++) {
+                    int r = s->block_row[blk[side]];
+                    if (r < 0) continue;
+                    double sg = side ? 1.0 : -1.0;
+                    bl_vec2 arm = bl_v2_scale(
+                        bl_v2_sub(in->p[e], m->blocks[blk[side]].centroid), 1.0 / s->L0);
+                    double mom = bl_v2_cross(arm, f);
+                    s->rowind[nz] = r;     s->val[nz++] = sg * f.x;
+                    s->rowind[nz] = r + 1; s->val[nz++] = sg * f.y;
+                    s->rowind[nz] = r + 2; s->val[nz++] = sg * mom;
+                }
+            }
+        }
+    }
+
+    /* Loads: self weight (dead) and weight-proportional live load at the
+     * centroids, point loads with their moments. */
+    bl_vec2 g = bl_model_gravity(m);
+    for (int i = 0; i < nb; i++) {
+        int r = s->block_row[i];
+        if (r < 0) continue;
+        double w = m->blocks[i].weight / s->W0;
+        if (m->self_weight) {
+            s->rhs[r] -= w * g.x;
+            s->rhs[r + 1] -= w * g.y;
+        }
+        if (m->live_weight) {
+            fL[r] += w * m->live_dir.x;
+            fL[r + 1] += w * m->live_dir.y;
+        }
+    }
+    for (int l = 0; l < m->nloads; l++) {
+        const bl_point_load *pl = &m->loads[l];
+        int r = s->block_row[pl->block];
+        if (r < 0) continue;
+        bl_vec2 f = bl_v2_scale(pl->force, 1.0 / s->W0);
+        bl_vec2 arm = bl_v2_scale(bl_v2_sub(pl->at, m->blocks[pl->block].centroid), 1.0 / s->L0);
+        double *dst = pl->live ? fL : s->rhs, sg = pl->live ? 1.0 : -1.0;
+        dst[r] += sg * f.x;
+        dst[r + 1] += sg * f.y;
+        dst[r + 2] += sg * bl_v2_cross(arm, f);
+    }
+    s->colptr[c] = nz;
+    s->lo[c] = -INFINITY;
+    s->hi[c] = INFINITY;
+    s->obj[c] = 1.0;
+    s->col_point[c] = -1;
+    s->col_kind[c] = -1;
+    s->col_nt[2 * c] = s->col_nt[2 * c + 1] = 0.0;
+    for (int r = 0; r < s->nrows; r++)
+        if (fL[r] != 0.0) {
+            s->rowind[nz] = r;
+            s->val[nz++] = fL[r];
+        }
+    s->colptr[c + 1] = nz;
+    free(fL);
+    return s;
+oom:
+    bl_system_free(s);
+    bl_error_set(err, "solve: out of memory assembling the equilibrium system");
+    return NULL;
+}
+
+void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, double *force)
+{
+    memset(force, 0, 4 * (size_t)m->ninterfaces * sizeof *force);
+    for (int j = 0; j < s->nforce; j++) {
+        int p = s->col_point[j];
+        force[2 * p] += s->W0 * x[j] * s->col_nt[2 * j];
+        force[2 * p + 1] += s->W0 * x[j] * s->col_nt[2 * j + 1];
+    }
+}
+
+void bl_system_mechanism(const bl_system *s, const bl_model *m, const double *y, double *u)
+{
+    /* Rows were scaled by 1/W0 (forces) and 1/(W0 L0) (moments), so the
+     * physical velocities are y scaled the same way; fL . u = 1 carries over
+     * (doc/theory.md, "scaling"). */
+    for (int i = 0; i < m->nblocks; i++) {
+        int r = s->block_row[i];
+        double *ui = u + 3 * i;
+        if (r < 0) {
+            ui[0] = ui[1] = ui[2] = 0.0;
+            continue;
+        }
+        ui[0] = y[r] / s->W0;
+        ui[1] = y[r + 1] / s->W0;
+        ui[2] = y[r + 2] / (s->W0 * s->L0);
+    }
+}
+
+void bl_system_residual(const bl_system *s, const double *x, double alpha, double *r)
+{
+    for (int i = 0; i < s->nrows; i++) r[i] = -s->rhs[i];
+    for (int j = 0; j < s->ncols; j++) {
+        double xj = j < s->nforce ? x[j] : alpha;
+        for (int p = s->colptr[j]; p < s->colptr[j + 1]; p++) r[s->rowind[p]] += s->val[p] * xj;
+    }
+}
+
+void bl_system_power(const bl_system *s, const double *y, double *w)
+{
+    for (int j = 0; j < s->nforce; j++) {
+        double t = 0.0;
+        for (int p = s->colptr[j]; p < s->colptr[j + 1]; p++) t += s->val[p] * y[s->rowind[p]];
+        w[j] = t;
+    }
+}

@@ -1,0 +1,58 @@
+/* assemble.h - the equilibrium system of a 2D model in bounds-only form.
+ *
+ * Unknowns: the contact forces, written as non-negative combinations of the
+ * edges of each contact point's friction cone (so that every yield condition
+ * is a bound on one variable), and the load multiplier alpha, last column.
+ * Rows: three per free block (force x, force y, moment about the centroid):
+ *
+ *     A x + alpha fL = -fD          (doc/theory.md, Eq. T4)
+ *
+ * Everything is scaled: lengths by L0, forces by W0, so that A, fL and fD
+ * are of order one.  alpha does not change. */
+#ifndef BL_ASSEMBLE_H
+#define BL_ASSEMBLE_H
+
+#include "model.h"
+
+/* What one force column is, in the interface frame (normal, tangent). */
+typedef enum bl_column_kind {
+    BL_COL_CONE_POS,   /* n = 1, t = +mu,  x >= 0 */
+    BL_COL_CONE_NEG,   /* n = 1, t = -mu,  x >= 0 */
+    BL_COL_NORMAL,     /* n = 1, t = 0,    x >= 0 (mu = 0 or no sliding) */
+    BL_COL_SHEAR,      /* n = 0, t = 1,    free (no sliding) */
+    BL_COL_COHESION    /* n = 0, t = 1,    -C <= x <= C */
+} bl_column_kind;
+
+typedef struct bl_system {
+    int nrows, ncols;        /* ncols = nforce + 1 */
+    int nforce;              /* force columns; alpha is column nforce */
+    int *colptr, *rowind;    /* CSC of [A fL], owned */
+    double *val;
+    double *lo, *hi;         /* column bounds, owned */
+    double *rhs;             /* -fD, owned */
+    double *obj;             /* 1 at alpha, owned */
+    int *block_row;          /* per block: its first row, -1 for supports */
+    int *col_point;          /* per force column: 2 * interface + end */
+    signed char *col_kind;   /* per force column: bl_column_kind */
+    double *col_nt;          /* per force column: (n, t) of a unit value */
+    double L0, W0;           /* length and force scales */
+} bl_system;
+
+/* Builds the system for m (whose interfaces must be detected).  Returns NULL
+ * with err set when the model cannot be assembled. */
+bl_system *bl_system_build(const bl_model *m, bl_error *err);
+void bl_system_free(bl_system *s);
+
+/* Physical contact forces (n0, t0, n1, t1 per interface) from x. */
+void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, double *force);
+
+/* Physical mechanism (vx, vy, omega per block) from the row multipliers y. */
+void bl_system_mechanism(const bl_system *s, const bl_model *m, const double *y, double *u);
+
+/* r = A x + alpha fL + fD, over the force columns x and alpha. */
+void bl_system_residual(const bl_system *s, const double *x, double alpha, double *r);
+
+/* w = A^T y over the force columns (w[j]: power of a unit value of column j). */
+void bl_system_power(const bl_system *s, const double *y, double *w);
+
+#endif

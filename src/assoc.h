@@ -1,0 +1,24 @@
+/* assoc.h - limit analysis with associative flow: one LP.
+ *
+ * The static LP (maximize alpha subject to equilibrium and yield, the seed's
+ * Eq. 10) gives alpha and the contact forces; its row multipliers are the
+ * mechanism of the kinematic LP (Eq. 11), so no second solve is needed. */
+#ifndef BL_ASSOC_H
+#define BL_ASSOC_H
+
+#include "model.h"
+#include "solution.h"
+
+typedef struct bl_solve_options {
+    double tolerance;   /* verification tolerance (default 1e-7) */
+    int verbose;        /* let the LP engine print */
+} bl_solve_options;
+
+void bl_solve_options_default(bl_solve_options *o);
+
+/* Detects interfaces when needed (which may fail: err says why), assembles,
+ * solves and verifies.  On success *out is a new solution whose status may
+ * be any bl_status: an infeasible model is an answer, not an error. */
+int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl_error *err);
+
+#endif

@@ -1,0 +1,286 @@
+#include "contact.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void bl_contact_tolerances(const bl_model *m, double *tol, double *gap)
+{
+    double typical = 0.0;
+    for (int i = 0; i < m->nblocks; i++) typical += sqrt(m->blocks[i].area);
+    if (m->nblocks) typical /= m->nblocks;
+    *tol = m->contact_tol > 0.0 ? m->contact_tol : 1e-8 * bl_model_size(m);
+    *gap = m->contact_gap > 0.0 ? m->contact_gap : 1e-2 * typical;
+    if (m->contact_gap < 0.0) *gap = 0.0; /* near-miss check switched off */
+    if (*gap < *tol) *gap = *tol;
+}
+
+/* What the pair tests found that is wrong with the model. */
+typedef struct problems {
+    int noverlap, nnear;
+    char overlap[5][128], near[5][128];
+} problems;
+
+/* Edge i of block k: from v[i] to v[i+1]; outward normal (dy, -dx)/len since
+ * polygons are counter-clockwise. */
+static void pair_contacts(bl_model *m, int ia, int ib, double tol, double gap, problems *pr,
+                          int *failed, bl_error *err)
+{
+    const bl_block *A = &m->blocks[ia], *B = &m->blocks[ib];
+    int found = 0;
+    double near_d = 0.0;
+    for (int i = 0; i < A->nv; i++) {
+        bl_vec2 p = A->v[i], q = A->v[(i + 1) % A->nv];
+        bl_vec2 d = bl_v2_sub(q, p);
+        double len = bl_v2_norm(d);
+        bl_vec2 t = bl_v2_scale(d, 1.0 / len);
+        bl_vec2 nrm = bl_v2(t.y, -t.x);
+        for (int j = 0; j < B->nv; j++) {
+            bl_vec2 r = B->v[j], s = B->v[(j + 1) % B->nv];
+            bl_vec2 e = bl_v2_sub(s, r);
+            if (bl_v2_dot(e, d) >= 0.0) continue; /* not facing opposite ways */
+            double hr = bl_v2_dot(bl_v2_sub(r, p), nrm), hs = bl_v2_dot(bl_v2_sub(s, p), nrm);
+            double tr = bl_v2_dot(bl_v2_sub(r, p), t), ts = bl_v2_dot(bl_v2_sub(s, p), t);
+            double t0 = fmax(0.0, fmin(tr, ts)), t1 = fmin(len, fmax(tr, ts));
+            if (t1 - t0 <= tol) continue;
+            if (fabs(hr) <= tol && fabs(hs) <= tol) {
+                bl_interface k = {0};
+                k.a = ia;
+                k.b = ib;
+                k.p[0] = bl_v2_add(p, bl_v2_scale(t, t0));
+                k.p[1] = bl_v2_add(p, bl_v2_scale(t, t1));
+                k.normal = nrm;
+                k.mu = m->mu;
+                k.cohesion = m->cohesion;
+                if (bl_model_add_interface(m, &k, err)) {
+                    *failed = 1;
+                    return;
+                }
+                found = 1;
+            } else if (hr > tol && hs > tol && hr <= gap && hs <= gap) {
+                near_d = fmax(near_d, fmin(hr, hs));
+            }
+        }
+    }
+    if (near_d > 0.0 && !found) {
+        if (pr->nnear < 5)
+            snprintf(pr->near[pr->nnear], sizeof pr->near[0], "blocks %d and %d (gap %.3g)",
+                     ia + 1, ib + 1, near_d);
+        pr->nnear++;
+    }
+}
+
+/* Interpenetration: edges crossing, or a vertex or edge midpoint of one block
+ * deeper than tol inside the other, or one centroid inside the other. */
+static int overlapping(const bl_block *A, const bl_block *B, double tol)
+{
+    for (int i = 0; i < A->nv; i++) {
+        bl_vec2 p = A->v[i], q = A->v[(i + 1) % A->nv];
+        for (int j = 0; j < B->nv; j++)
+            if (bl_segments_cross(p, q, B->v[j], B->v[(j + 1) % B->nv], tol)) return 1;
+    }
+    for (int pass = 0; pass < 2; pass++) {
+        const bl_block *X = pass ? B : A, *Y = pass ? A : B;
+        for (int i = 0; i < X->nv; i++) {
+            bl_vec2 mid = bl_v2_scale(bl_v2_add(X->v[i], X->v[(i + 1) % X->nv]), 0.5);
+            if (bl_polygon_depth(Y->v, Y->nv, X->v[i]) > tol ||
+                bl_polygon_depth(Y->v, Y->nv, mid) > tol)
+                return 1;
+        }
+        if (bl_polygon_depth(Y->v, Y->nv, X->centroid) > tol) return 1;
+    }
+    return 0;
+}
+
+static int same_pair(const bl_interface *k, int a, int b)
+{
+    return (k->a == a && k->b == b) || (k->a == b && k->b == a);
+}
+
+static int apply_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
+{
+    if (s->npoints == 2) {
+        int n = 0;
+        for (int i = 0; i < m->ninterfaces; i++)
+            if (!same_pair(&m->interfaces[i], s->a, s->b)) m->interfaces[n++] = m->interfaces[i];
+        m->ninterfaces = n;
+        bl_vec2 d = bl_v2_sub(s->p[1], s->p[0]);
+        double len = bl_v2_norm(d);
+        bl_interface k = {0};
+        k.a = s->a;
+        k.b = s->b;
+        k.p[0] = s->p[0];
+        k.p[1] = s->p[1];
+        k.normal = bl_v2(-d.y / len, d.x / len);
+        bl_vec2 ab = bl_v2_sub(m->blocks[s->b].centroid, m->blocks[s->a].centroid);
+        if (bl_v2_dot(k.normal, ab) < 0.0) k.normal = bl_v2_scale(k.normal, -1.0);
+        k.mu = s->has_mu ? s->mu : m->mu;
+        k.cohesion = s->has_cohesion ? s->cohesion : m->cohesion;
+        k.manual = 1;
+        return bl_model_add_interface(m, &k, err);
+    }
+    int hit = 0;
+    for (int i = 0; i < m->ninterfaces; i++) {
+        bl_interface *k = &m->interfaces[i];
+        if (!same_pair(k, s->a, s->b)) continue;
+        if (s->has_mu) k->mu = s->mu;
+        if (s->has_cohesion) k->cohesion = s->cohesion;
+        hit = 1;
+    }
+    if (!hit)
+        return bl_error_set(err,
+                            "interface: blocks %d and %d share no interface to change; "
+                            "give points = {{x1, y1}, {x2, y2}} to declare one",
+                            s->a + 1, s->b + 1);
+    return 0;
+}
+
+/* Lists the first few items of a problem class into buf. */
+static void list(char *buf, size_t size, char items[][128], int shown, int total)
+{
+    size_t len = strlen(buf);
+    for (int i = 0; i < shown && len < size; i++) {
+        snprintf(buf + len, size - len, "%s%s", i ? ", " : "", items[i]);
+        len = strlen(buf);
+    }
+    if (total > shown && len < size) snprintf(buf + len, size - len, " and %d more", total - shown);
+}
+
+int bl_contact_detect(bl_model *m, bl_error *err)
+{
+    double tol, gap;
+    bl_contact_tolerances(m, &tol, &gap);
+    m->ninterfaces = 0;
+    m->contacts_valid = 0;
+    int n = m->nblocks;
+    if (n == 0) return bl_error_set(err, "contacts: the model has no blocks");
+
+    /* Grid of cells about the mean block size, capped to O(n) cells. */
+    double box[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY}, mean = 0.0;
+    for (int i = 0; i < n; i++) {
+        const double *b = m->blocks[i].box;
+        box[0] = fmin(box[0], b[0]);
+        box[1] = fmin(box[1], b[1]);
+        box[2] = fmax(box[2], b[2]);
+        box[3] = fmax(box[3], b[3]);
+        mean += fmax(b[2] - b[0], b[3] - b[1]);
+    }
+    mean /= n;
+    double W = box[2] - box[0] + 2 * gap, H = box[3] - box[1] + 2 * gap;
+    double cell = fmax(mean, sqrt(W * H / (4.0 * n)));
+    int nx = (int)(W / cell) + 1, ny = (int)(H / cell) + 1;
+    int *range = malloc((size_t)n * 4 * sizeof *range);
+    int *start = calloc((size_t)nx * ny + 1, sizeof *start);
+    int *fill = NULL, *items = NULL, failed = 0;
+    problems pr = {0};
+    if (!range || !start) goto oom;
+    long total = 0;
+    for (int i = 0; i < n; i++) {
+        const double *b = m->blocks[i].box;
+        int *r = range + 4 * i;
+        r[0] = (int)((b[0] - gap - box[0] + gap) / cell);
+        r[1] = (int)((b[1] - gap - box[1] + gap) / cell);
+        r[2] = (int)((b[2] + gap - box[0] + gap) / cell);
+        r[3] = (int)((b[3] + gap - box[1] + gap) / cell);
+        if (r[2] >= nx) r[2] = nx - 1;
+        if (r[3] >= ny) r[3] = ny - 1;
+        for (int y = r[1]; y <= r[3]; y++)
+            for (int x = r[0]; x <= r[2]; x++) start[y * nx + x + 1]++;
+        total += (long)(r[2] - r[0] + 1) * (r[3] - r[1] + 1);
+    }
+    for (int c = 0; c < nx * ny; c++) start[c + 1] += start[c];
+    fill = malloc((size_t)nx * ny * sizeof *fill);
+    items = malloc((size_t)(total ? total : 1) * sizeof *items);
+    if (!fill || !items) goto oom;
+    memcpy(fill, start, (size_t)nx * ny * sizeof *fill);
+    for (int i = 0; i < n; i++) {
+        const int *r = range + 4 * i;
+        for (int y = r[1]; y <= r[3]; y++)
+            for (int x = r[0]; x <= r[2]; x++) items[fill[y * nx + x]++] = i;
+    }
+
+    for (int c = 0; c < nx * ny && !failed; c++) {
+        int cx = c % nx, cy = c / nx;
+        for (int s = start[c]; s < start[c + 1] && !failed; s++) {
+            for (int t = s + 1; t < start[c + 1] && !failed; t++) {
+                int i = items[s], j = items[t];
+                if (i > j) { int tmp = i; i = j; j = tmp; }
+                const int *ri = range + 4 * i, *rj = range + 4 * j;
+                /* visit each pair once: in the first cell the two share */
+                if (cx != (ri[0] > rj[0] ? ri[0] : rj[0]) || cy != (ri[1] > rj[1] ? ri[1] : rj[1]))
+                    continue;
+                const bl_block *A = &m->blocks[i], *B = &m->blocks[j];
+                if (A->support && B->support) continue;
+                if (A->box[0] > B->box[2] + gap || B->box[0] > A->box[2] + gap ||
+                    A->box[1] > B->box[3] + gap || B->box[1] > A->box[3] + gap)
+                    continue;
+                if (A->box[0] < B->box[2] - tol && B->box[0] < A->box[2] - tol &&
+                    A->box[1] < B->box[3] - tol && B->box[1] < A->box[3] - tol &&
+                    overlapping(A, B, tol)) {
+                    if (pr.noverlap < 5)
+                        snprintf(pr.overlap[pr.noverlap], sizeof pr.overlap[0],
+                                 "blocks %d and %d", i + 1, j + 1);
+                    pr.noverlap++;
+                    continue;
+                }
+                pair_contacts(m, i, j, tol, gap, &pr, &failed, err);
+            }
+        }
+    }
+    free(range);
+    free(start);
+    free(fill);
+    free(items);
+    range = start = fill = items = NULL;
+    if (failed) goto fail;
+
+    char msg[sizeof err->msg] = "";
+    if (pr.noverlap) {
+        snprintf(msg, sizeof msg, "contacts: overlapping ");
+        list(msg, sizeof msg, pr.overlap, pr.noverlap < 5 ? pr.noverlap : 5,
+             pr.noverlap);
+    }
+    if (pr.nnear) {
+        size_t len = strlen(msg);
+        snprintf(msg + len, sizeof msg - len, "%snear-miss (edges %.3g apart or less, "
+                 "neither touching within tol = %.3g): ", len ? "; " : "contacts: ", gap, tol);
+        list(msg, sizeof msg, pr.near, pr.nnear < 5 ? pr.nnear : 5, pr.nnear);
+    }
+    for (int s = 0; s < m->njoints && !msg[0]; s++)
+        if (apply_joint(m, &m->joints[s], err)) goto fail;
+    if (!msg[0]) {
+        char *touched = calloc((size_t)n, 1);
+        if (!touched) goto oom;
+        for (int k = 0; k < m->ninterfaces; k++)
+            touched[m->interfaces[k].a] = touched[m->interfaces[k].b] = 1;
+        int lonely = 0;
+        size_t len = 0;
+        for (int i = 0; i < n; i++) {
+            if (touched[i] || m->blocks[i].support) continue;
+            if (lonely == 0)
+                len = (size_t)snprintf(msg, sizeof msg, "contacts: no interface on free block");
+            if (lonely < 8 && len < sizeof msg)
+                len += (size_t)snprintf(msg + len, sizeof msg - len, " %d", i + 1);
+            lonely++;
+        }
+        if (lonely > 8 && len < sizeof msg)
+            snprintf(msg + len, sizeof msg - len, " and %d more", lonely - 8);
+        free(touched);
+    }
+    if (msg[0]) {
+        bl_error_set(err, "%s", msg);
+        goto fail;
+    }
+    m->contacts_valid = 1;
+    return 0;
+oom:
+    bl_error_set(err, "contacts: out of memory");
+fail:
+    free(range);
+    free(start);
+    free(fill);
+    free(items);
+    m->ninterfaces = 0;
+    return -1;
+}

@@ -1,0 +1,460 @@
+#include "draw.h"
+
+#include <cairo.h>
+#include <cairo-svg.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define DEFAULT_WIDTH 1000
+#define SHOW_FRACTION 0.08  /* largest drawn displacement / model size */
+#define STILL_FRACTION 0.01 /* blocks moving less than this share look still */
+#define MAX_ASPECT 2.0      /* a tall model is shrunk rather than drawn taller */
+#define PNG_MAX_SIDE 32767  /* cairo's limit for image surfaces */
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+typedef struct rgb {
+    double r, g, b;
+} rgb;
+
+static const rgb INK = {0.13, 0.13, 0.13};
+static const rgb GHOST = {0.60, 0.60, 0.60};
+static const rgb SUPPORT_FILL = {0.82, 0.82, 0.82};
+static const rgb SUPPORT_HATCH = {0.38, 0.38, 0.38};
+static const rgb SUPPORT_EDGE = {0.25, 0.25, 0.25};
+static const rgb MOVING = {0.89, 0.58, 0.44};  /* light terracotta */
+static const rgb STILL = {0.96, 0.90, 0.85};
+static const rgb BLOCK_EDGE = {0.33, 0.17, 0.10};
+static const rgb HINGE = {0.84, 0.09, 0.09};
+static const rgb HINGE_EDGE = {0.45, 0.02, 0.02};
+static const rgb SLIDING = {0.11, 0.38, 0.82};
+static const rgb SEPARATING = {0.96, 0.52, 0.03};
+
+/* Everything the drawing needs, worked out before the surface exists because
+ * the canvas height depends on it. */
+typedef struct pic {
+    const bl_solution *s;
+    const bl_model *m;    /* NULL when there is nothing to draw */
+    double k;             /* mechanism scale; 0 draws the undeformed model */
+    double maxd;          /* largest vertex speed of the mechanism */
+    double w, h;
+    double unit;          /* line widths and text follow the picture width */
+    double sc, x0, y0;    /* model (x, y) -> canvas (x0 + sc x, y0 - sc y) */
+    double top, dh;       /* drawing area, canvas units */
+    double font;
+    double margin;        /* around the drawing and left of the caption */
+    char caption[96];
+    double caption_y, legend_x, legend_y;
+    int has_legend;
+} pic;
+
+static void color(cairo_t *cr, rgb c) { cairo_set_source_rgb(cr, c.r, c.g, c.b); }
+
+static int moves(const pic *P, int b)
+{
+    return P->k > 0.0 && b >= 0 && b < P->m->nblocks && !P->m->blocks[b].support;
+}
+
+/* Speed of block b at p in the (linear) velocity field u describes. */
+static double speed(const bl_solution *s, int b, bl_vec2 p)
+{
+    const double *u = s->u + 3 * b;
+    bl_vec2 r = bl_v2_sub(p, s->model->blocks[b].centroid);
+    return hypot(u[0] - u[2] * r.y, u[1] + u[2] * r.x);
+}
+
+/* Rigid motion of block b over "time" k under its constant velocity field:
+ * rotation by a = k omega about the centroid plus the translation
+ * k (sin a / a, (1 - cos a) / a) applied to v.  This is the exact integral of
+ * the velocity field, a pure rotation about the instantaneous centre, so the
+ * blocks do not distort and a block rocking on a still one keeps its hinge
+ * corner in place; rotating about the centroid and then adding k v would let
+ * that corner drift by a second-order amount. */
+static bl_vec2 moved(const pic *P, int b, bl_vec2 p)
+{
+    if (!moves(P, b)) return p;
+    const double *u = P->s->u + 3 * b;
+    bl_vec2 c = P->m->blocks[b].centroid, r = bl_v2_sub(p, c);
+    double a = P->k * u[2], cs = cos(a), sn = sin(a);
+    double s1 = fabs(a) < 1e-8 ? 1.0 : sn / a;
+    double s2 = fabs(a) < 1e-8 ? 0.5 * a : 2.0 * sin(0.5 * a) * sin(0.5 * a) / a;
+    bl_vec2 t = bl_v2(P->k * (s1 * u[0] - s2 * u[1]), P->k * (s1 * u[1] + s2 * u[0]));
+    return bl_v2(c.x + cs * r.x - sn * r.y + t.x, c.y + sn * r.x + cs * r.y + t.y);
+}
+
+static bl_vec2 dev(const pic *P, bl_vec2 p)
+{
+    return bl_v2(P->x0 + P->sc * p.x, P->y0 - P->sc * p.y);
+}
+
+/* A joint marker rides with the side that moves less there, usually the one
+ * that stays: a sliding or separating line then marks the face the other
+ * block left, and a hinge sits where both blocks still touch. */
+static int anchor(const pic *P, const bl_interface *f)
+{
+    double da = 0.0, db = 0.0;
+    for (int j = 0; j < 2; j++) {
+        if (moves(P, f->a)) da += speed(P->s, f->a, f->p[j]);
+        if (moves(P, f->b)) db += speed(P->s, f->b, f->p[j]);
+    }
+    return db < da ? f->b : f->a;
+}
+
+static void block_path(cairo_t *cr, const pic *P, int b, int displaced)
+{
+    const bl_block *B = &P->m->blocks[b];
+    cairo_new_path(cr);
+    for (int i = 0; i < B->nv; i++) {
+        bl_vec2 q = dev(P, displaced ? moved(P, b, B->v[i]) : B->v[i]);
+        cairo_line_to(cr, q.x, q.y);
+    }
+    cairo_close_path(cr);
+}
+
+static void hatched(cairo_t *cr, const pic *P, int b)
+{
+    double step = fmax(3.0, 7.0 * P->unit), x1, y1, x2, y2;
+    block_path(cr, P, b, 0);
+    color(cr, SUPPORT_FILL);
+    cairo_fill_preserve(cr);
+    cairo_save(cr);
+    cairo_clip_preserve(cr);
+    cairo_path_extents(cr, &x1, &y1, &x2, &y2);
+    cairo_new_path(cr);
+    /* 45 degree lines anchored on the canvas, so that neighbouring supports
+     * continue each other's hatch */
+    double first = floor((x1 + y1) / step) * step;
+    for (double c = first; c <= x2 + y2 + step; c += step) {
+        cairo_move_to(cr, c - y1 + step, y1 - step);
+        cairo_line_to(cr, c - y2 - step, y2 + step);
+    }
+    color(cr, SUPPORT_HATCH);
+    cairo_set_line_width(cr, 0.8 * P->unit);
+    cairo_stroke(cr);
+    cairo_restore(cr);
+    block_path(cr, P, b, 0);
+    color(cr, SUPPORT_EDGE);
+    cairo_set_line_width(cr, 1.3 * P->unit);
+    cairo_stroke(cr);
+}
+
+static void hinge_dot(cairo_t *cr, const pic *P, bl_vec2 q)
+{
+    cairo_new_path(cr);
+    cairo_arc(cr, q.x, q.y, fmax(2.5, 5.0 * P->unit), 0.0, 2.0 * M_PI);
+    color(cr, HINGE);
+    cairo_fill_preserve(cr);
+    color(cr, HINGE_EDGE);
+    cairo_set_line_width(cr, fmax(0.6, 1.0 * P->unit));
+    cairo_stroke(cr);
+}
+
+static void sliding_line(cairo_t *cr, const pic *P, bl_vec2 a, bl_vec2 b)
+{
+    cairo_new_path(cr);
+    cairo_move_to(cr, a.x, a.y);
+    cairo_line_to(cr, b.x, b.y);
+    color(cr, SLIDING);
+    cairo_set_line_width(cr, fmax(2.0, 4.5 * P->unit));
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    cairo_stroke(cr);
+}
+
+static void separating_line(cairo_t *cr, const pic *P, bl_vec2 a, bl_vec2 b)
+{
+    double dash[2] = {7.0 * P->unit, 4.0 * P->unit};
+    cairo_new_path(cr);
+    cairo_move_to(cr, a.x, a.y);
+    cairo_line_to(cr, b.x, b.y);
+    color(cr, SEPARATING);
+    cairo_set_line_width(cr, 2.4 * P->unit);
+    cairo_set_dash(cr, dash, 2, 0.0);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, NULL, 0, 0.0);
+}
+
+static void set_font(cairo_t *cr, const pic *P)
+{
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, P->font);
+}
+
+static const char *const LEGEND[3] = {"hinge", "sliding", "separating"};
+
+/* Draws the legend with its left end at (x, baseline y), or with draw 0 only
+ * measures it.  Returns its width. */
+static double legend(cairo_t *cr, const pic *P, double x, double y, int draw)
+{
+    double sample = 1.8 * P->font, pad = 0.45 * P->font, gap = 1.3 * P->font;
+    double mid = y - 0.33 * P->font, x_start = x;
+    for (int i = 0; i < 3; i++) {
+        if (draw) {
+            bl_vec2 a = bl_v2(x, mid), b = bl_v2(x + sample, mid);
+            if (i == 0) hinge_dot(cr, P, bl_v2(x + 0.5 * sample, mid));
+            if (i == 1) sliding_line(cr, P, a, b);
+            if (i == 2) separating_line(cr, P, a, b);
+        }
+        x += sample + pad;
+        cairo_text_extents_t te;
+        cairo_text_extents(cr, LEGEND[i], &te);
+        if (draw) {
+            color(cr, INK);
+            cairo_move_to(cr, x, y);
+            cairo_show_text(cr, LEGEND[i]);
+        }
+        x += te.x_advance + (i < 2 ? gap : 0.0);
+    }
+    return x - x_start;
+}
+
+/* Largest vertex speed of the free blocks, 0 when u holds a NaN or an
+ * infinity: such a mechanism cannot be drawn, the model still can. */
+static double max_speed(const bl_solution *s)
+{
+    const bl_model *m = s->model;
+    double maxd = 0.0;
+    for (int b = 0; b < m->nblocks; b++) {
+        const bl_block *B = &m->blocks[b];
+        if (B->support) continue;
+        for (int i = 0; i < B->nv; i++) {
+            double d = speed(s, b, B->v[i]);
+            if (!isfinite(d)) return 0.0;
+            maxd = fmax(maxd, d);
+        }
+    }
+    return maxd;
+}
+
+/* Scale of the mechanism and bounding box of what will be drawn. */
+static void extent(pic *P, double box[4])
+{
+    const bl_model *m = P->m;
+    P->maxd = P->s->has_mechanism && P->s->u ? max_speed(P->s) : 0.0;
+    double size = bl_model_size(m);
+    P->k = P->maxd > 0.0 && size > 0.0 ? SHOW_FRACTION * size / P->maxd : 0.0;
+    box[0] = box[1] = INFINITY;
+    box[2] = box[3] = -INFINITY;
+    for (int b = 0; b < m->nblocks; b++) {
+        const bl_block *B = &m->blocks[b];
+        for (int i = 0; i < B->nv; i++)
+            for (int pass = 0; pass < 2; pass++) {
+                bl_vec2 q = pass ? moved(P, b, B->v[i]) : B->v[i];
+                box[0] = fmin(box[0], q.x);
+                box[1] = fmin(box[1], q.y);
+                box[2] = fmax(box[2], q.x);
+                box[3] = fmax(box[3], q.y);
+            }
+    }
+}
+
+/* Fixes the canvas size and where everything goes. */
+static void layout(pic *P, const bl_solution *s, int width)
+{
+    memset(P, 0, sizeof *P);
+    P->s = s;
+    P->m = s->model && s->model->nblocks > 0 ? s->model : NULL;
+    P->w = width;
+    P->unit = fmax(0.6, width / 1000.0);
+    P->font = fmax(11.0, 15.0 * width / 1000.0);
+    double margin = P->margin = fmax(8.0, 0.04 * width);
+    double dw = fmax(1.0, P->w - 2.0 * margin);
+    P->top = margin;
+    P->dh = 0.3 * dw;
+    if (P->m) {
+        double box[4];
+        extent(P, box);
+        double bw = fmax(box[2] - box[0], 1e-300), bh = fmax(box[3] - box[1], 1e-300);
+        P->sc = dw / bw;
+        P->dh = bh * P->sc;
+        if (P->dh > MAX_ASPECT * dw) {
+            P->dh = MAX_ASPECT * dw;
+            P->sc = P->dh / bh;
+        }
+        P->x0 = 0.5 * (P->w - bw * P->sc) - box[0] * P->sc;
+        P->y0 = P->top + box[3] * P->sc;
+    }
+    const char *name = bl_status_name(s->status);
+    snprintf(P->caption, sizeof P->caption, "alpha = %.5g  (%s)", s->alpha, name ? name : "?");
+    P->has_legend = P->m && P->k > 0.0;
+
+    /* text widths need a cairo context; a 1x1 image gives the same metrics
+     * as the real surfaces for the toy font API */
+    cairo_surface_t *scratch = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);
+    cairo_t *cr = cairo_create(scratch);
+    set_font(cr, P);
+    cairo_text_extents_t te;
+    cairo_text_extents(cr, P->caption, &te);
+    double cw = te.x_advance, lw = P->has_legend ? legend(cr, P, 0.0, 0.0, 0) : 0.0;
+    cairo_destroy(cr);
+    cairo_surface_destroy(scratch);
+
+    double line = 1.7 * P->font;
+    P->caption_y = P->top + P->dh + 0.6 * margin + P->font;
+    P->legend_x = P->w - margin - lw;
+    P->legend_y = P->caption_y;
+    int two_lines = P->has_legend && margin + cw + 2.0 * P->font > P->legend_x;
+    if (two_lines) {
+        P->legend_x = margin;
+        P->legend_y += line;
+    }
+    P->h = ceil(P->legend_y + 0.6 * P->font + 0.5 * margin);
+}
+
+static void draw(cairo_t *cr, const pic *P)
+{
+    cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+    cairo_paint(cr);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    set_font(cr, P);
+
+    const bl_model *m = P->m;
+    if (!m) {
+        const char *empty = "(no blocks)";
+        cairo_text_extents_t te;
+        cairo_text_extents(cr, empty, &te);
+        color(cr, GHOST);
+        cairo_move_to(cr, 0.5 * (P->w - te.x_advance), P->top + 0.5 * P->dh);
+        cairo_show_text(cr, empty);
+    } else {
+        const bl_solution *s = P->s;
+        if (P->k > 0.0) {
+            for (int b = 0; b < m->nblocks; b++) {
+                if (m->blocks[b].support) continue;
+                block_path(cr, P, b, 0);
+                color(cr, GHOST);
+                cairo_set_line_width(cr, 0.9 * P->unit);
+                cairo_stroke(cr);
+            }
+        }
+        for (int b = 0; b < m->nblocks; b++)
+            if (m->blocks[b].support) hatched(cr, P, b);
+        for (int b = 0; b < m->nblocks; b++) {
+            const bl_block *B = &m->blocks[b];
+            if (B->support) continue;
+            double d = 0.0;
+            for (int i = 0; P->k > 0.0 && i < B->nv; i++) d = fmax(d, speed(s, b, B->v[i]));
+            rgb fill = d >= STILL_FRACTION * P->maxd && P->k > 0.0 ? MOVING : STILL;
+            block_path(cr, P, b, 1);
+            /* slightly see-through, so the outlines of the original
+             * position stay visible under the moved blocks */
+            cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, P->k > 0.0 ? 0.88 : 1.0);
+            cairo_fill_preserve(cr);
+            color(cr, BLOCK_EDGE);
+            cairo_set_line_width(cr, 1.2 * P->unit);
+            cairo_stroke(cr);
+        }
+        if (P->k > 0.0 && s->state) {
+            /* hinges last: a dot must not be hidden by a neighbouring line */
+            for (int pass = 0; pass < 2; pass++)
+                for (int i = 0; i < m->ninterfaces; i++) {
+                    const bl_interface *f = &m->interfaces[i];
+                    if (f->a < 0 || f->a >= m->nblocks || f->b < 0 || f->b >= m->nblocks)
+                        continue;
+                    int side = anchor(P, f);
+                    bl_vec2 a = dev(P, moved(P, side, f->p[0]));
+                    bl_vec2 b = dev(P, moved(P, side, f->p[1]));
+                    int h = s->hinge ? s->hinge[i] : -1;
+                    if (pass == 0 && s->state[i] == BL_SLIDING) sliding_line(cr, P, a, b);
+                    if (pass == 0 && s->state[i] == BL_SEPARATING) separating_line(cr, P, a, b);
+                    if (pass == 1 && s->state[i] == BL_ROCKING && (h == 0 || h == 1))
+                        hinge_dot(cr, P, h ? b : a);
+                }
+        }
+    }
+
+    color(cr, INK);
+    cairo_move_to(cr, P->margin, P->caption_y);
+    cairo_show_text(cr, P->caption);
+    if (P->has_legend) legend(cr, P, P->legend_x, P->legend_y, 1);
+}
+
+typedef struct sink {
+    FILE *f;
+    int errnum;
+} sink;
+
+static cairo_status_t put(void *closure, const unsigned char *data, unsigned int length)
+{
+    sink *o = closure;
+    if (fwrite(data, 1, length, o->f) != length) {
+        if (!o->errnum) o->errnum = errno ? errno : EIO;
+        return CAIRO_STATUS_WRITE_ERROR;
+    }
+    return CAIRO_STATUS_SUCCESS;
+}
+
+static int check(const bl_solution *s, const char *kind, const char *file, int *width,
+                 bl_error *err)
+{
+    if (!s) return bl_error_set(err, "%s: no solution to draw", kind);
+    if (!file) return bl_error_set(err, "%s: no file name", kind);
+    if (*width < 0) return bl_error_set(err, "%s: width must be positive, got %d", kind, *width);
+    if (*width == 0) *width = DEFAULT_WIDTH;
+    return 0;
+}
+
+static int start(sink *o, const char *kind, const char *file, bl_error *err)
+{
+    o->errnum = 0;
+    o->f = fopen(file, "wb");
+    if (!o->f) return bl_error_set(err, "%s: cannot write '%s': %s", kind, file, strerror(errno));
+    return 0;
+}
+
+/* Closes the file and reports the first failure.  A partial file is left
+ * alone: removing it could remove a device or a link the user named. */
+static int finish(sink *o, cairo_status_t st, const char *kind, const char *file, bl_error *err)
+{
+    if (fclose(o->f) != 0 && !o->errnum) o->errnum = errno ? errno : EIO;
+    if (st == CAIRO_STATUS_SUCCESS && !o->errnum) return 0;
+    const char *why = o->errnum ? strerror(o->errnum) : cairo_status_to_string(st);
+    return bl_error_set(err, "%s: cannot write '%s': %s", kind, file, why);
+}
+
+int bl_draw_svg(const bl_solution *s, const char *file, int width, bl_error *err)
+{
+    if (check(s, "svg", file, &width, err)) return -1;
+    pic P;
+    layout(&P, s, width);
+    sink o;
+    if (start(&o, "svg", file, err)) return -1;
+    cairo_surface_t *sf = cairo_svg_surface_create_for_stream(put, &o, P.w, P.h);
+#if CAIRO_VERSION >= CAIRO_VERSION_ENCODE(1, 16, 0)
+    /* the same numbers as the PNG: a browser shows both at the same size */
+    cairo_svg_surface_set_document_unit(sf, CAIRO_SVG_UNIT_PX);
+#endif
+    cairo_t *cr = cairo_create(sf);
+    draw(cr, &P);
+    cairo_status_t st = cairo_status(cr);
+    cairo_destroy(cr);
+    cairo_surface_finish(sf);
+    if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(sf);
+    cairo_surface_destroy(sf);
+    return finish(&o, st, "svg", file, err);
+}
+
+int bl_draw_png(const bl_solution *s, const char *file, int width, bl_error *err)
+{
+    if (check(s, "png", file, &width, err)) return -1;
+    if (width > PNG_MAX_SIDE)
+        return bl_error_set(err, "png: width %d is larger than %d pixels", width, PNG_MAX_SIDE);
+    pic P;
+    layout(&P, s, width);
+    if (P.h > PNG_MAX_SIDE)
+        return bl_error_set(err, "png: picture height %.0f is larger than %d pixels", P.h,
+                            PNG_MAX_SIDE);
+    sink o;
+    if (start(&o, "png", file, err)) return -1;
+    cairo_surface_t *sf = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)P.w, (int)P.h);
+    cairo_t *cr = cairo_create(sf);
+    draw(cr, &P);
+    cairo_status_t st = cairo_status(cr);
+    cairo_destroy(cr);
+    if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_write_to_png_stream(sf, put, &o);
+    cairo_surface_destroy(sf);
+    return finish(&o, st, "png", file, err);
+}

@@ -1,0 +1,28 @@
+/* error.h - the error struct every fallible core function fills.
+ *
+ * A fallible function returns 0 on success and -1 on failure; on failure it
+ * writes one readable sentence naming the offending object into err->msg.
+ * err may be NULL when the caller does not want the message. */
+#ifndef BL_ERROR_H
+#define BL_ERROR_H
+
+typedef struct bl_error {
+    char msg[1024];
+} bl_error;
+
+/* Formats the message into err (if not NULL) and returns -1. */
+int bl_error_set(bl_error *err, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
+/* Interruption (Ctrl-C).  The front end's signal handler calls
+ * bl_interrupt_request(); long computations poll bl_interrupt_pending() and
+ * stop with an "interrupted" status.  The flag is cleared when a new solve
+ * starts. */
+void bl_interrupt_request(void);
+void bl_interrupt_clear(void);
+int bl_interrupt_pending(void);
+
+/* Wall-clock seconds from an arbitrary origin, for the timings of a result. */
+double bl_clock(void);
+
+#endif

@@ -1,0 +1,61 @@
+/* lp.h - the thin interface every method uses to solve a linear program.
+ *
+ *     maximize obj . x   subject to   A x = rhs,   lo <= x <= hi
+ *
+ * (equality rows and variable bounds only: the bounds-only form of
+ * assemble.h).  An opaque workspace is made once per problem; the bounds can
+ * then be changed and the problem re-solved from the previous basis, which
+ * is what a sequence of LPs needs.  An infeasible or unbounded LP is an
+ * outcome, not an error. */
+#ifndef BL_LP_H
+#define BL_LP_H
+
+#include "error.h"
+
+typedef struct bl_lp_problem {
+    int nrows, ncols;
+    const int *colptr, *rowind; /* CSC, borrowed for the call to create */
+    const double *val;
+    const double *lo, *hi, *rhs, *obj;
+} bl_lp_problem;
+
+typedef struct bl_lp_settings {
+    int verbose;         /* 0: the engine prints nothing */
+    int max_iterations;  /* 0: engine default */
+    double tolerance;    /* primal and dual feasibility */
+} bl_lp_settings;
+
+void bl_lp_settings_default(bl_lp_settings *s);
+
+typedef enum bl_lp_status {
+    BL_LP_OPTIMAL,
+    BL_LP_INFEASIBLE,
+    BL_LP_UNBOUNDED,
+    BL_LP_ITERATION_LIMIT,
+    BL_LP_INTERRUPTED,
+    BL_LP_FAILED
+} bl_lp_status;
+
+typedef struct bl_lp bl_lp;
+
+/* NULL with err set on failure.  The problem's arrays are copied. */
+bl_lp *bl_lp_create(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *err);
+void bl_lp_free(bl_lp *lp);
+
+/* Replaces all column bounds (arrays of ncols). */
+void bl_lp_set_bounds(bl_lp *lp, const double *lo, const double *hi);
+
+/* Solves (warm from the last basis when there is one), polling
+ * bl_interrupt_pending() between iterations. */
+bl_lp_status bl_lp_solve(bl_lp *lp);
+
+/* After an optimal solve: x (ncols) and the row multipliers y (nrows), with
+ * the sign for which the reduced costs obj - A^T y are <= 0 at columns on
+ * their lower bound and >= 0 on their upper bound.  Owned by lp. */
+const double *bl_lp_primal(const bl_lp *lp);
+const double *bl_lp_dual(const bl_lp *lp);
+int bl_lp_iterations(const bl_lp *lp);
+/* Name of the engine ("simplex"). */
+const char *bl_lp_engine(const bl_lp *lp);
+
+#endif

@@ -1,0 +1,129 @@
+// lp_clp.cpp - the simplex engine of lp.h: COIN-OR CLP's dual simplex.
+//
+// C++ only because CLP's event handler, the one way to stop a running solve
+// on Ctrl-C, is a C++ class; everything else is plain.
+
+#include <ClpEventHandler.hpp>
+#include <ClpSimplex.hpp>
+#include <CoinMessageHandler.hpp>
+
+#include <cmath>
+#include <new>
+#include <vector>
+
+extern "C" {
+#include "lp.h"
+}
+
+namespace {
+
+class InterruptHandler : public ClpEventHandler {
+public:
+    explicit InterruptHandler(ClpSimplex *m) : ClpEventHandler(m) {}
+    InterruptHandler(const InterruptHandler &o) = default;
+    ClpEventHandler *clone() const override { return new InterruptHandler(*this); }
+    int event(Event e) override
+    {
+        // Returning 0 makes CLP stop with status 5.
+        if ((e == endOfIteration || e == endOfFactorization) && bl_interrupt_pending()) return 0;
+        return -1;
+    }
+};
+
+} // namespace
+
+struct bl_lp {
+    ClpSimplex model;
+    int nrows = 0, ncols = 0;
+    std::vector<double> x, y;
+    int iterations = 0;
+};
+
+extern "C" void bl_lp_settings_default(bl_lp_settings *s)
+{
+    s->verbose = 0;
+    s->max_iterations = 0;
+    s->tolerance = 1e-9;
+}
+
+static double clp_bound(double v)
+{
+    return std::isinf(v) ? (v > 0 ? COIN_DBL_MAX : -COIN_DBL_MAX) : v;
+}
+
+extern "C" bl_lp *bl_lp_create(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *err)
+{
+    bl_lp *lp = new (std::nothrow) bl_lp;
+    if (!lp) {
+        bl_error_set(err, "lp: out of memory");
+        return nullptr;
+    }
+    try {
+        lp->nrows = p->nrows;
+        lp->ncols = p->ncols;
+        std::vector<double> lo(p->ncols), hi(p->ncols), obj(p->ncols);
+        for (int j = 0; j < p->ncols; j++) {
+            lo[j] = clp_bound(p->lo[j]);
+            hi[j] = clp_bound(p->hi[j]);
+            obj[j] = -p->obj[j]; // CLP minimizes
+        }
+        std::vector<CoinBigIndex> start(p->colptr, p->colptr + p->ncols + 1);
+        lp->model.loadProblem(p->ncols, p->nrows, start.data(), p->rowind, p->val, lo.data(),
+                              hi.data(), obj.data(), p->rhs, p->rhs);
+        lp->model.setLogLevel(s->verbose ? 1 : 0);
+        if (!s->verbose) lp->model.messageHandler()->setLogLevel(0);
+        if (s->max_iterations > 0) lp->model.setMaximumIterations(s->max_iterations);
+        if (s->tolerance > 0) {
+            lp->model.setPrimalTolerance(s->tolerance);
+            lp->model.setDualTolerance(s->tolerance);
+        }
+        InterruptHandler h(&lp->model);
+        lp->model.passInEventHandler(&h);
+        lp->x.assign(p->ncols, 0.0);
+        lp->y.assign(p->nrows, 0.0);
+    } catch (...) {
+        delete lp;
+        bl_error_set(err, "lp: CLP could not load the problem");
+        return nullptr;
+    }
+    return lp;
+}
+
+extern "C" void bl_lp_free(bl_lp *lp) { delete lp; }
+
+extern "C" void bl_lp_set_bounds(bl_lp *lp, const double *lo, const double *hi)
+{
+    for (int j = 0; j < lp->ncols; j++)
+        lp->model.setColumnBounds(j, clp_bound(lo[j]), clp_bound(hi[j]));
+}
+
+extern "C" bl_lp_status bl_lp_solve(bl_lp *lp)
+{
+    try {
+        lp->model.dual(0); // from the current basis: warm after the first solve
+    } catch (...) {
+        return BL_LP_FAILED;
+    }
+    lp->iterations = lp->model.numberIterations();
+    int st = lp->model.status();
+    if (st == 0) {
+        const double *x = lp->model.primalColumnSolution();
+        const double *y = lp->model.dualRowSolution();
+        for (int j = 0; j < lp->ncols; j++) lp->x[j] = x[j];
+        // CLP's prices are for the minimization of -obj: flip them.
+        for (int i = 0; i < lp->nrows; i++) lp->y[i] = -y[i];
+    }
+    switch (st) {
+    case 0: return BL_LP_OPTIMAL;
+    case 1: return BL_LP_INFEASIBLE;
+    case 2: return BL_LP_UNBOUNDED;
+    case 3: return BL_LP_ITERATION_LIMIT;
+    case 5: return BL_LP_INTERRUPTED;
+    default: return BL_LP_FAILED;
+    }
+}
+
+extern "C" const double *bl_lp_primal(const bl_lp *lp) { return lp->x.data(); }
+extern "C" const double *bl_lp_dual(const bl_lp *lp) { return lp->y.data(); }
+extern "C" int bl_lp_iterations(const bl_lp *lp) { return lp->iterations; }
+extern "C" const char *bl_lp_engine(const bl_lp *) { return "simplex"; }

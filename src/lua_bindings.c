@@ -1,0 +1,696 @@
+/* lua_bindings.c - the only code that touches the Lua stack.
+ *
+ * The C side of the DSL: a model userdata with the methods block, contacts,
+ * interface, load, solve and stats, and a solution userdata for drawing.
+ * Every constructor takes one table of named fields; unknown fields, wrong
+ * types and bad values are errors that name the function and the field.
+ * All checks happen before the model is touched, so a rejected call leaves
+ * it as it was.  The Lua half of the module (lua/blocklim.lua) keeps the
+ * current model and turns these methods into the global commands. */
+#include "lua_bindings.h"
+
+#include <lauxlib.h>
+#include <lualib.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "assoc.h"
+#include "contact.h"
+#include "draw.h"
+#include "model.h"
+#include "solution.h"
+
+#define MODEL_MT "blocklim.model"
+#define SOLUTION_MT "blocklim.solution"
+
+/* ---- argument checking ------------------------------------------------- */
+
+/* Raises a Lua error with a printf-formatted message and no position prefix:
+ * the message itself names the function and the field. */
+static int fail(lua_State *L, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static int fail(lua_State *L, const char *fmt, ...)
+{
+    char msg[1200];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    lua_pushstring(L, msg);
+    return lua_error(L);
+}
+
+/* Raises an error for the first key of table idx that is neither one of the
+ * names in allowed (NULL-terminated) nor a positional index 1..npos. */
+static void check_fields(lua_State *L, int idx, const char *fn, const char *const *allowed, int npos)
+{
+    luaL_checktype(L, idx, LUA_TTABLE);
+    lua_pushnil(L);
+    while (lua_next(L, idx)) {
+        lua_pop(L, 1);
+        if (lua_type(L, -1) == LUA_TSTRING) {
+            const char *k = lua_tostring(L, -1);
+            int ok = 0;
+            for (const char *const *a = allowed; *a && !ok; a++) ok = strcmp(*a, k) == 0;
+            if (!ok) {
+                char list[256] = "";
+                for (const char *const *a = allowed; *a; a++) {
+                    size_t len = strlen(list);
+                    snprintf(list + len, sizeof list - len, "%s%s", a != allowed ? ", " : "", *a);
+                }
+                fail(L, "%s: unknown field '%s' (fields: %s)", fn, k, list);
+            }
+        } else if (lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 1 &&
+                   lua_tointeger(L, -1) <= npos) {
+            continue;
+        } else {
+            fail(L, "%s: unexpected %s key in the table (fields are named)", fn,
+                       luaL_typename(L, -1));
+        }
+    }
+}
+
+/* Pushes field f of table idx; returns 0 (and pushes nothing) if it is nil. */
+static int field(lua_State *L, int idx, const char *f)
+{
+    if (lua_getfield(L, idx, f) == LUA_TNIL) {
+        lua_pop(L, 1);
+        return 0;
+    }
+    return 1;
+}
+
+enum { ANY = 0, NONNEG = 1, POSITIVE = 2 };
+
+/* Reads number field f, or returns def when absent. */
+static double number_field(lua_State *L, int idx, const char *fn, const char *f, double def,
+                           int sign)
+{
+    if (!field(L, idx, f)) return def;
+    if (!lua_isnumber(L, -1) || lua_type(L, -1) == LUA_TSTRING)
+        fail(L, "%s: field '%s' must be a number, got %s", fn, f, luaL_typename(L, -1));
+    double v = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+    if (isnan(v)) fail(L, "%s: field '%s' is not a number (nan)", fn, f);
+    if (sign == NONNEG && v < 0) fail(L, "%s: field '%s' must be >= 0, got %g", fn, f, v);
+    if (sign == POSITIVE && !(v > 0))
+        fail(L, "%s: field '%s' must be > 0, got %g", fn, f, v);
+    if (sign != ANY && isinf(v) && strcmp(f, "mu") != 0)
+        fail(L, "%s: field '%s' must be finite", fn, f);
+    return v;
+}
+
+static int boolean_field(lua_State *L, int idx, const char *fn, const char *f, int def)
+{
+    if (!field(L, idx, f)) return def;
+    if (!lua_isboolean(L, -1))
+        fail(L, "%s: field '%s' must be true or false, got %s", fn, f, luaL_typename(L, -1));
+    int v = lua_toboolean(L, -1);
+    lua_pop(L, 1);
+    return v;
+}
+
+/* Reads the value on top of the stack as a point {x, y}; pops it. */
+static bl_vec2 to_point(lua_State *L, const char *fn, const char *what)
+{
+    if (!lua_istable(L, -1))
+        fail(L, "%s: %s must be a point {x, y}, got %s", fn, what, luaL_typename(L, -1));
+    double c[2];
+    for (int i = 0; i < 2; i++) {
+        lua_geti(L, -1, i + 1);
+        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
+            fail(L, "%s: %s must be a point {x, y} of two finite numbers", fn, what);
+        c[i] = lua_tonumber(L, -1);
+        lua_pop(L, 1);
+    }
+    if (lua_rawlen(L, -1) != 2)
+        fail(L, "%s: %s must be a point {x, y} of two numbers, got %d", fn, what,
+                   (int)lua_rawlen(L, -1));
+    lua_pop(L, 1);
+    return bl_v2(c[0], c[1]);
+}
+
+static int point_field(lua_State *L, int idx, const char *fn, const char *f, bl_vec2 *out)
+{
+    if (!field(L, idx, f)) return 0;
+    char what[64];
+    snprintf(what, sizeof what, "field '%s'", f);
+    *out = to_point(L, fn, what);
+    return 1;
+}
+
+/* Options with fixed choices: returns the index of the choice. */
+static int choice_field(lua_State *L, int idx, const char *fn, const char *f,
+                        const char *const *choices, int def)
+{
+    if (!field(L, idx, f)) return def;
+    const char *s = lua_tostring(L, -1);
+    for (int i = 0; s && lua_type(L, -1) == LUA_TSTRING && choices[i]; i++)
+        if (strcmp(s, choices[i]) == 0) {
+            lua_pop(L, 1);
+            return i;
+        }
+    char list[256] = "";
+    for (int i = 0; choices[i]; i++) {
+        size_t len = strlen(list);
+        snprintf(list + len, sizeof list - len, "%s\"%s\"", i ? ", " : "", choices[i]);
+    }
+    return fail(L, "%s: field '%s' must be one of %s, got %s", fn, f, list,
+                luaL_tolstring(L, -1, NULL));
+}
+
+static bl_model *check_model(lua_State *L, int idx)
+{
+    bl_model **p = luaL_checkudata(L, idx, MODEL_MT);
+    return *p;
+}
+
+/* A block number given by the user (1-based) -> index. */
+static int block_index(lua_State *L, bl_model *m, int idx, const char *fn, const char *what)
+{
+    if (!lua_isinteger(L, idx))
+        fail(L, "%s: %s must be a block number, got %s", fn, what, luaL_typename(L, idx));
+    lua_Integer b = lua_tointeger(L, idx);
+    if (b < 1 || b > m->nblocks)
+        fail(L, "%s: %s is block %d, but the model has blocks 1 to %d", fn, what, (int)b,
+                   m->nblocks);
+    return (int)b - 1;
+}
+
+/* ---- model -------------------------------------------------------------- */
+
+static int model_new(lua_State *L)
+{
+    static const char *const fields[] = {"name", "dim", "mu", "cohesion", "density",
+                                         "thickness", "gravity", NULL};
+    check_fields(L, 1, "model", fields, 0);
+    double dim = number_field(L, 1, "model", "dim", 2, POSITIVE);
+    if (dim != 2)
+        fail(L, "model: field 'dim' must be 2 (3D models are not built yet), got %g", dim);
+    const char *name = "";
+    if (field(L, 1, "name")) {
+        if (lua_type(L, -1) != LUA_TSTRING)
+            fail(L, "model: field 'name' must be a string, got %s", luaL_typename(L, -1));
+        name = lua_tostring(L, -1);
+        lua_pop(L, 1);
+    }
+    double mu = number_field(L, 1, "model", "mu", 0.65, NONNEG);
+    double c = number_field(L, 1, "model", "cohesion", 0.0, NONNEG);
+    double rho = number_field(L, 1, "model", "density", 1.0, POSITIVE);
+    double th = number_field(L, 1, "model", "thickness", 1.0, POSITIVE);
+    bl_vec2 g = bl_v2(0, -1);
+    if (point_field(L, 1, "model", "gravity", &g) && bl_v2_norm(g) == 0)
+        fail(L, "model: field 'gravity' must be a non-zero direction");
+
+    bl_model **p = lua_newuserdatauv(L, sizeof *p, 0);
+    *p = NULL;
+    luaL_setmetatable(L, MODEL_MT);
+    *p = bl_model_new();
+    if (!*p) return fail(L, "model: out of memory");
+    bl_model *m = *p;
+    snprintf(m->name, sizeof m->name, "%s", name);
+    m->mu = mu;
+    m->cohesion = c;
+    m->density = rho;
+    m->thickness = th;
+    m->gravity = bl_v2_scale(g, 1.0 / bl_v2_norm(g));
+    return 1;
+}
+
+static int model_gc(lua_State *L)
+{
+    bl_model **p = luaL_checkudata(L, 1, MODEL_MT);
+    bl_model_free(*p);
+    *p = NULL;
+    return 0;
+}
+
+static int model_tostring(lua_State *L)
+{
+    bl_model *m = check_model(L, 1);
+    int nfree = bl_model_free_blocks(m);
+    lua_pushfstring(L, "model%s%s: %d free blocks, %d supports, mu = %f", m->name[0] ? " " : "",
+                    m->name, nfree, m->nblocks - nfree, m->mu);
+    if (m->contacts_valid) lua_pushfstring(L, ", %d interfaces", m->ninterfaces);
+    else lua_pushstring(L, "");
+    lua_concat(L, 2);
+    return 1;
+}
+
+static int model_block(lua_State *L)
+{
+    static const char *const fields[] = {"vertices", "support", "density", "thickness", NULL};
+    bl_model *m = check_model(L, 1);
+    check_fields(L, 2, "block", fields, 0);
+    if (!field(L, 2, "vertices"))
+        return fail(L, "block: field 'vertices' is missing (a list of points {x, y})");
+    if (!lua_istable(L, -1))
+        return fail(L, "block: field 'vertices' must be a list of points, got %s",
+                          luaL_typename(L, -1));
+    int nv = (int)lua_rawlen(L, -1);
+    if (nv < 3) return fail(L, "block: field 'vertices' needs at least 3 points, got %d", nv);
+    int vt = lua_gettop(L);
+    bl_vec2 *v = lua_newuserdatauv(L, (size_t)nv * sizeof *v, 0); /* scratch, owned by Lua */
+    for (int i = 0; i < nv; i++) {
+        char what[64];
+        snprintf(what, sizeof what, "field 'vertices' point %d", i + 1);
+        lua_geti(L, vt, i + 1);
+        v[i] = to_point(L, "block", what);
+    }
+    int support = boolean_field(L, 2, "block", "support", 0);
+    double rho = number_field(L, 2, "block", "density", 0.0, POSITIVE);
+    double th = number_field(L, 2, "block", "thickness", 0.0, POSITIVE);
+    bl_error err;
+    if (bl_model_add_block(m, v, nv, support, rho, th, &err))
+        return fail(L, "block: %s", err.msg);
+    lua_pushinteger(L, m->nblocks);
+    return 1;
+}
+
+static int model_contacts(lua_State *L)
+{
+    static const char *const fields[] = {"tol", "gap", NULL};
+    bl_model *m = check_model(L, 1);
+    if (lua_isnoneornil(L, 2)) lua_newtable(L), lua_replace(L, 2);
+    check_fields(L, 2, "contacts", fields, 0);
+    double tol = number_field(L, 2, "contacts", "tol", m->contact_tol, NONNEG);
+    double gap = number_field(L, 2, "contacts", "gap", m->contact_gap, NONNEG);
+    if (field(L, 2, "gap")) {
+        lua_pop(L, 1);
+        if (gap == 0) gap = -1; /* an explicit 0 switches the near-miss check off */
+    }
+    m->contact_tol = tol;
+    m->contact_gap = gap;
+    bl_error err;
+    if (bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
+    lua_pushinteger(L, m->ninterfaces);
+    return 1;
+}
+
+static int model_interface(lua_State *L)
+{
+    static const char *const fields[] = {"mu", "cohesion", "points", NULL};
+    bl_model *m = check_model(L, 1);
+    check_fields(L, 2, "interface", fields, 2);
+    bl_joint_spec s = {0};
+    lua_geti(L, 2, 1);
+    s.a = block_index(L, m, -1, "interface", "entry 1");
+    lua_geti(L, 2, 2);
+    s.b = block_index(L, m, -1, "interface", "entry 2");
+    lua_pop(L, 2);
+    if (s.a == s.b) return fail(L, "interface: entries 1 and 2 are the same block %d", s.a + 1);
+    if (m->blocks[s.a].support && m->blocks[s.b].support)
+        return fail(L, "interface: blocks %d and %d are both supports", s.a + 1, s.b + 1);
+    s.has_mu = field(L, 2, "mu") ? (lua_pop(L, 1), 1) : 0;
+    s.mu = number_field(L, 2, "interface", "mu", 0, NONNEG);
+    s.has_cohesion = field(L, 2, "cohesion") ? (lua_pop(L, 1), 1) : 0;
+    s.cohesion = number_field(L, 2, "interface", "cohesion", 0, NONNEG);
+    if (field(L, 2, "points")) {
+        if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
+            return fail(L, "interface: field 'points' must be two points {{x1, y1}, {x2, y2}}");
+        for (int i = 0; i < 2; i++) {
+            lua_geti(L, -1, i + 1);
+            s.p[i] = to_point(L, "interface", i ? "field 'points' point 2" : "field 'points' point 1");
+        }
+        lua_pop(L, 1);
+        if (bl_v2_norm(bl_v2_sub(s.p[1], s.p[0])) == 0)
+            return fail(L, "interface: field 'points' has two equal points");
+        s.npoints = 2;
+    }
+    if (!s.npoints && !s.has_mu && !s.has_cohesion)
+        return fail(L, "interface: give 'mu', 'cohesion' or 'points'");
+    bl_error err;
+    if (bl_model_add_joint(m, &s, &err)) return fail(L, "%s", err.msg);
+    return 0;
+}
+
+static int model_load(lua_State *L)
+{
+    static const char *const fields[] = {"dead", "live", "direction", "tilt", NULL};
+    static const char *const point_fields[] = {"block", "at", "force", NULL};
+    static const char *const dead_choices[] = {"self-weight", "none", NULL};
+    static const char *const live_choices[] = {"horizontal", "none", NULL};
+    bl_model *m = check_model(L, 1);
+    check_fields(L, 2, "load", fields, 0);
+    int kinds[2] = {-1, -1}; /* dead, live: choice index, 2 = point load, -1 = absent */
+    bl_point_load pl[2] = {{0}, {0}};
+    for (int k = 0; k < 2; k++) {
+        const char *f = k ? "live" : "dead";
+        if (!field(L, 2, f)) continue;
+        if (lua_istable(L, -1)) {
+            char fn[32];
+            snprintf(fn, sizeof fn, "load %s", f);
+            int t = lua_gettop(L);
+            check_fields(L, t, fn, point_fields, 0);
+            if (!field(L, t, "block")) fail(L, "%s: field 'block' is missing", fn);
+            pl[k].block = block_index(L, m, -1, fn, "field 'block'");
+            lua_pop(L, 1);
+            if (m->blocks[pl[k].block].support)
+                fail(L, "%s: block %d is a support; loads on it do nothing", fn,
+                           pl[k].block + 1);
+            if (!point_field(L, t, fn, "at", &pl[k].at))
+                fail(L, "%s: field 'at' is missing (the point {x, y} where it acts)", fn);
+            if (!point_field(L, t, fn, "force", &pl[k].force))
+                fail(L, "%s: field 'force' is missing ({fx, fy})", fn);
+            pl[k].live = k;
+            kinds[k] = 2;
+            lua_pop(L, 1);
+        } else {
+            lua_pop(L, 1);
+            kinds[k] = choice_field(L, 2, "load", f, k ? live_choices : dead_choices, 0);
+        }
+    }
+    bl_vec2 dir = m->live_dir;
+    int has_dir = point_field(L, 2, "load", "direction", &dir);
+    if (has_dir && bl_v2_norm(dir) == 0)
+        return fail(L, "load: field 'direction' must be a non-zero vector");
+    if (has_dir && kinds[1] != 0)
+        return fail(L, "load: field 'direction' goes with live = \"horizontal\"");
+    double tilt = number_field(L, 2, "load", "tilt", NAN, ANY);
+    if (!isnan(tilt) && !(fabs(tilt) < 90))
+        return fail(L, "load: field 'tilt' must be an angle in degrees between -90 and 90");
+
+    bl_error err;
+    for (int k = 0; k < 2; k++)
+        if (kinds[k] == 2 && bl_model_add_point_load(m, &pl[k], &err))
+            return fail(L, "%s", err.msg);
+    if (kinds[0] == 0) m->self_weight = 1;
+    if (kinds[0] == 1 || kinds[1] == 1) {
+        int live = kinds[1] == 1, n = 0;
+        if (live) m->live_weight = 0;
+        else m->self_weight = 0;
+        for (int i = 0; i < m->nloads; i++)
+            if (m->loads[i].live != live) m->loads[n++] = m->loads[i];
+        m->nloads = n;
+    }
+    if (kinds[1] == 0) {
+        m->live_weight = 1;
+        m->live_dir = bl_v2_scale(dir, 1.0 / bl_v2_norm(dir));
+    }
+    if (!isnan(tilt)) m->tilt = tilt * M_PI / 180.0;
+    return 0;
+}
+
+static int model_stats(lua_State *L)
+{
+    bl_model *m = check_model(L, 1);
+    bl_error err;
+    if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
+    int nfree = bl_model_free_blocks(m);
+    double tol, gap;
+    bl_contact_tolerances(m, &tol, &gap);
+    lua_createtable(L, 0, 6);
+    lua_pushinteger(L, nfree);
+    lua_setfield(L, -2, "blocks");
+    lua_pushinteger(L, m->nblocks - nfree);
+    lua_setfield(L, -2, "supports");
+    lua_pushinteger(L, m->ninterfaces);
+    lua_setfield(L, -2, "interfaces");
+    lua_pushnumber(L, bl_model_size(m));
+    lua_setfield(L, -2, "size");
+    lua_pushnumber(L, tol);
+    lua_setfield(L, -2, "tol");
+    lua_pushnumber(L, gap);
+    lua_setfield(L, -2, "gap");
+    return 1;
+}
+
+/* model:block_info(i) -> { vertices, centroid, area, weight, support } */
+static int model_block_info(lua_State *L)
+{
+    bl_model *m = check_model(L, 1);
+    const bl_block *b = &m->blocks[block_index(L, m, 2, "block_info", "argument 1")];
+    lua_createtable(L, 0, 5);
+    lua_createtable(L, b->nv, 0);
+    for (int i = 0; i < b->nv; i++) {
+        lua_createtable(L, 2, 0);
+        lua_pushnumber(L, b->v[i].x);
+        lua_rawseti(L, -2, 1);
+        lua_pushnumber(L, b->v[i].y);
+        lua_rawseti(L, -2, 2);
+        lua_rawseti(L, -2, i + 1);
+    }
+    lua_setfield(L, -2, "vertices");
+    lua_createtable(L, 2, 0);
+    lua_pushnumber(L, b->centroid.x);
+    lua_rawseti(L, -2, 1);
+    lua_pushnumber(L, b->centroid.y);
+    lua_rawseti(L, -2, 2);
+    lua_setfield(L, -2, "centroid");
+    lua_pushnumber(L, b->area);
+    lua_setfield(L, -2, "area");
+    lua_pushnumber(L, b->weight);
+    lua_setfield(L, -2, "weight");
+    lua_pushboolean(L, b->support);
+    lua_setfield(L, -2, "support");
+    return 1;
+}
+
+/* ---- solve and results ---------------------------------------------------- */
+
+static void set_number(lua_State *L, const char *k, double v)
+{
+    lua_pushnumber(L, v);
+    lua_setfield(L, -2, k);
+}
+
+static void push_point(lua_State *L, bl_vec2 p)
+{
+    lua_createtable(L, 2, 0);
+    lua_pushnumber(L, p.x);
+    lua_rawseti(L, -2, 1);
+    lua_pushnumber(L, p.y);
+    lua_rawseti(L, -2, 2);
+}
+
+static void push_pair(lua_State *L, double a, double b)
+{
+    push_point(L, bl_v2(a, b));
+}
+
+/* Builds the result table of doc/guide.md from s (on the stack at sidx). */
+static void push_result(lua_State *L, const bl_solution *s, int sidx)
+{
+    const bl_model *m = s->model;
+    lua_createtable(L, 0, 20);
+    lua_pushvalue(L, sidx);
+    lua_setfield(L, -2, "_solution");
+    set_number(L, "alpha", s->alpha);
+    lua_pushstring(L, bl_status_name(s->status));
+    lua_setfield(L, -2, "status");
+    lua_pushstring(L, bl_status_sentence(s->status));
+    lua_setfield(L, -2, "message");
+    lua_pushboolean(L, s->verified);
+    lua_setfield(L, -2, "verified");
+    lua_pushstring(L, "assoc");
+    lua_setfield(L, -2, "method");
+    lua_pushstring(L, "associative");
+    lua_setfield(L, -2, "flow");
+    lua_pushstring(L, s->lp ? s->lp : "");
+    lua_setfield(L, -2, "lp");
+    lua_pushinteger(L, s->iterations);
+    lua_setfield(L, -2, "iterations");
+    set_number(L, "tolerance", s->tolerance);
+    int nfree = bl_model_free_blocks(m);
+    lua_createtable(L, 0, 5);
+    lua_pushinteger(L, nfree);
+    lua_setfield(L, -2, "blocks");
+    lua_pushinteger(L, m->nblocks - nfree);
+    lua_setfield(L, -2, "supports");
+    lua_pushinteger(L, m->ninterfaces);
+    lua_setfield(L, -2, "interfaces");
+    lua_pushinteger(L, s->rows);
+    lua_setfield(L, -2, "rows");
+    lua_pushinteger(L, s->cols);
+    lua_setfield(L, -2, "columns");
+    lua_setfield(L, -2, "size");
+
+    lua_createtable(L, 0, 5);
+    set_number(L, "detection", s->time.detection);
+    set_number(L, "assembly", s->time.assembly);
+    set_number(L, "solve", s->time.solve);
+    set_number(L, "verification", s->time.verification);
+    set_number(L, "total", s->time.total);
+    lua_setfield(L, -2, "timings");
+
+    if (!s->has_mechanism) return;
+    lua_createtable(L, 0, 6);
+    set_number(L, "equilibrium", s->res.equilibrium);
+    set_number(L, "yield", s->res.yield);
+    set_number(L, "admissibility", s->res.admissibility);
+    set_number(L, "complementarity", s->res.complementarity);
+    set_number(L, "normalization", s->res.normalization);
+    set_number(L, "work", s->res.work);
+    lua_setfield(L, -2, "residuals");
+
+    lua_createtable(L, m->nblocks, 0);
+    for (int i = 0; i < m->nblocks; i++) {
+        lua_createtable(L, 3, 0);
+        for (int c = 0; c < 3; c++) {
+            lua_pushnumber(L, s->u[3 * i + c]);
+            lua_rawseti(L, -2, c + 1);
+        }
+        lua_rawseti(L, -2, i + 1);
+    }
+    lua_setfield(L, -2, "mechanism");
+
+    int count[4] = {0};
+    lua_createtable(L, m->ninterfaces, 0);
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        const double *f = s->force + 4 * k;
+        count[s->state[k]]++;
+        lua_createtable(L, 0, 10);
+        lua_pushinteger(L, in->a + 1);
+        lua_setfield(L, -2, "a");
+        lua_pushinteger(L, in->b + 1);
+        lua_setfield(L, -2, "b");
+        lua_pushstring(L, bl_state_name(s->state[k]));
+        lua_setfield(L, -2, "state");
+        lua_createtable(L, 2, 0);
+        push_point(L, in->p[0]);
+        lua_rawseti(L, -2, 1);
+        push_point(L, in->p[1]);
+        lua_rawseti(L, -2, 2);
+        lua_setfield(L, -2, "points");
+        push_point(L, in->normal);
+        lua_setfield(L, -2, "normal");
+        if (s->hinge[k] >= 0) {
+            push_point(L, in->p[s->hinge[k]]);
+            lua_setfield(L, -2, "hinge");
+        }
+        push_pair(L, f[0], f[2]);
+        lua_setfield(L, -2, "n");
+        push_pair(L, f[1], f[3]);
+        lua_setfield(L, -2, "t");
+        set_number(L, "N", f[0] + f[2]);
+        set_number(L, "T", f[1] + f[3]);
+        set_number(L, "mu", in->mu);
+        lua_rawseti(L, -2, k + 1);
+    }
+    lua_setfield(L, -2, "interfaces");
+    lua_createtable(L, 0, 4);
+    for (int st = 0; st < 4; st++) {
+        lua_pushinteger(L, count[st]);
+        lua_setfield(L, -2, bl_state_name((bl_state)st));
+    }
+    lua_setfield(L, -2, "states");
+}
+
+static int model_solve(lua_State *L)
+{
+    static const char *const fields[] = {"flow", "method", "lp", "tolerance", "verbose", NULL};
+    static const char *const flows[] = {"associative", NULL};
+    static const char *const methods[] = {"assoc", NULL};
+    static const char *const lps[] = {"simplex", NULL};
+    bl_model *m = check_model(L, 1);
+    if (lua_isnoneornil(L, 2)) lua_newtable(L), lua_replace(L, 2);
+    check_fields(L, 2, "solve", fields, 0);
+    choice_field(L, 2, "solve", "flow", flows, 0);
+    choice_field(L, 2, "solve", "method", methods, 0);
+    choice_field(L, 2, "solve", "lp", lps, 0);
+    bl_solve_options o;
+    bl_solve_options_default(&o);
+    o.tolerance = number_field(L, 2, "solve", "tolerance", o.tolerance, POSITIVE);
+    o.verbose = boolean_field(L, 2, "solve", "verbose", 0);
+
+    bl_solution **box = lua_newuserdatauv(L, sizeof *box, 0);
+    *box = NULL;
+    luaL_setmetatable(L, SOLUTION_MT);
+    int sidx = lua_gettop(L);
+    bl_error err;
+    if (bl_assoc_solve(m, &o, box, &err)) return fail(L, "%s", err.msg);
+    push_result(L, *box, sidx);
+    return 1;
+}
+
+static int solution_gc(lua_State *L)
+{
+    bl_solution **p = luaL_checkudata(L, 1, SOLUTION_MT);
+    bl_solution_free(*p);
+    *p = NULL;
+    return 0;
+}
+
+/* core.draw(solution, file, format, width) */
+static int core_draw(lua_State *L)
+{
+    bl_solution **p = luaL_checkudata(L, 1, SOLUTION_MT);
+    const char *file = luaL_checkstring(L, 2);
+    const char *fmt = luaL_checkstring(L, 3);
+    int width = (int)luaL_optinteger(L, 4, 0);
+    bl_error err;
+    int rc = strcmp(fmt, "svg") == 0 ? bl_draw_svg(*p, file, width, &err)
+                                     : bl_draw_png(*p, file, width, &err);
+    if (rc) return fail(L, "%s", err.msg);
+    return 0;
+}
+
+/* ---- module ---------------------------------------------------------------- */
+
+extern const struct {
+    const char *name;
+    const char *src;
+    size_t len;
+} bl_embedded_lua[];
+
+/* package.preload loader for an embedded module; upvalue: its index. */
+static int load_embedded(lua_State *L)
+{
+    int i = (int)lua_tointeger(L, lua_upvalueindex(1));
+    char chunk[64];
+    snprintf(chunk, sizeof chunk, "=[blocklim %s.lua]", bl_embedded_lua[i].name);
+    if (luaL_loadbuffer(L, bl_embedded_lua[i].src, bl_embedded_lua[i].len, chunk) != LUA_OK)
+        return lua_error(L);
+    lua_pushvalue(L, 1);
+    lua_call(L, 1, 1);
+    return 1;
+}
+
+int luaopen_blocklim(lua_State *L)
+{
+    static const luaL_Reg model_methods[] = {
+        {"block", model_block},         {"contacts", model_contacts}, {"interface", model_interface},
+        {"load", model_load},           {"solve", model_solve},       {"stats", model_stats},
+        {"block_info", model_block_info}, {NULL, NULL}};
+    static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw}, {NULL, NULL}};
+
+    if (luaL_newmetatable(L, MODEL_MT)) {
+        lua_pushcfunction(L, model_gc);
+        lua_setfield(L, -2, "__gc");
+        lua_pushcfunction(L, model_tostring);
+        lua_setfield(L, -2, "__tostring");
+        luaL_newlib(L, model_methods);
+        lua_setfield(L, -2, "__index");
+    }
+    lua_getfield(L, -1, "__index");
+    lua_remove(L, -2);
+    int methods = lua_gettop(L);
+    if (luaL_newmetatable(L, SOLUTION_MT)) {
+        lua_pushcfunction(L, solution_gc);
+        lua_setfield(L, -2, "__gc");
+    }
+    lua_pop(L, 1);
+
+    /* Embedded Lua modules become "blocklim.<name>" in package.preload. */
+    lua_getglobal(L, "package");
+    lua_getfield(L, -1, "preload");
+    for (int i = 0; bl_embedded_lua[i].name; i++) {
+        lua_pushfstring(L, "blocklim.%s", bl_embedded_lua[i].name);
+        lua_pushinteger(L, i);
+        lua_pushcclosure(L, load_embedded, 1);
+        lua_settable(L, -3);
+    }
+    lua_pop(L, 2);
+
+    /* The front module gets the C core, with the model methods table. */
+    lua_getglobal(L, "require");
+    lua_pushstring(L, "blocklim.blocklim");
+    lua_call(L, 1, 1);
+    luaL_newlib(L, core);
+    lua_pushvalue(L, methods);
+    lua_setfield(L, -2, "model_methods");
+    lua_call(L, 1, 1);
+    return 1;
+}

@@ -1,0 +1,187 @@
+#include "model.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+bl_model *bl_model_new(void)
+{
+    bl_model *m = calloc(1, sizeof *m);
+    if (!m) return NULL;
+    m->mu = 0.65;
+    m->cohesion = 0.0;
+    m->density = 1.0;
+    m->thickness = 1.0;
+    m->gravity = bl_v2(0.0, -1.0);
+    m->self_weight = 1;
+    m->live_weight = 1;
+    m->live_dir = bl_v2(1.0, 0.0);
+    return m;
+}
+
+void bl_model_free(bl_model *m)
+{
+    if (!m) return;
+    for (int i = 0; i < m->nblocks; i++) free(m->blocks[i].v);
+    free(m->blocks);
+    free(m->interfaces);
+    free(m->joints);
+    free(m->loads);
+    free(m);
+}
+
+static void *dup_array(const void *p, size_t n, size_t size)
+{
+    if (n == 0) return NULL;
+    void *q = malloc(n * size);
+    if (q) memcpy(q, p, n * size);
+    return q;
+}
+
+bl_model *bl_model_copy(const bl_model *m)
+{
+    bl_model *c = malloc(sizeof *c);
+    if (!c) return NULL;
+    *c = *m;
+    c->blocks = dup_array(m->blocks, (size_t)m->nblocks, sizeof *m->blocks);
+    c->interfaces = dup_array(m->interfaces, (size_t)m->ninterfaces, sizeof *m->interfaces);
+    c->joints = dup_array(m->joints, (size_t)m->njoints, sizeof *m->joints);
+    c->loads = dup_array(m->loads, (size_t)m->nloads, sizeof *m->loads);
+    c->cap_blocks = c->nblocks;
+    c->cap_interfaces = c->ninterfaces;
+    c->cap_joints = c->njoints;
+    c->cap_loads = c->nloads;
+    int ok = (!m->nblocks || c->blocks) && (!m->ninterfaces || c->interfaces) &&
+             (!m->njoints || c->joints) && (!m->nloads || c->loads);
+    for (int i = 0; ok && i < m->nblocks; i++) {
+        c->blocks[i].v = dup_array(m->blocks[i].v, (size_t)m->blocks[i].nv, sizeof(bl_vec2));
+        if (!c->blocks[i].v) {
+            for (int j = i; j < m->nblocks; j++) c->blocks[j].v = NULL;
+            ok = 0;
+        }
+    }
+    if (!ok) {
+        if (!c->blocks) c->nblocks = 0;
+        bl_model_free(c);
+        return NULL;
+    }
+    return c;
+}
+
+/* Grows *p (of *cap elements of size bytes) to hold n elements. */
+static int reserve(void **p, int *cap, int n, size_t size)
+{
+    if (n <= *cap) return 0;
+    int c = *cap ? *cap : 16;
+    while (c < n) c *= 2;
+    void *q = realloc(*p, (size_t)c * size);
+    if (!q) return -1;
+    *p = q;
+    *cap = c;
+    return 0;
+}
+
+#define RESERVE(arr, cap, n) reserve((void **)&(arr), &(cap), (n), sizeof *(arr))
+
+int bl_model_add_block(bl_model *m, const bl_vec2 *v, int nv, int support,
+                       double density, double thickness, bl_error *err)
+{
+    int id = m->nblocks + 1;
+    if (nv < 3)
+        return bl_error_set(err, "block %d: needs at least 3 vertices, got %d", id, nv);
+    for (int i = 0; i < nv; i++)
+        if (!isfinite(v[i].x) || !isfinite(v[i].y))
+            return bl_error_set(err, "block %d: vertex %d is not a finite point", id, i + 1);
+    double box[4];
+    bl_polygon_bbox(v, nv, box);
+    double size = hypot(box[2] - box[0], box[3] - box[1]);
+    double area = bl_polygon_area(v, nv);
+    /* All points on one line: zero area, whatever the self-intersection
+     * test would say about the edges folding back. */
+    int flat = 1;
+    for (int i = 1; i < nv && flat; i++)
+        for (int j = i + 1; j < nv && flat; j++)
+            flat = fabs(bl_v2_cross(bl_v2_sub(v[i], v[0]), bl_v2_sub(v[j], v[0]))) <=
+                   1e-12 * size * size;
+    if (flat) return bl_error_set(err, "block %d: polygon has zero area", id);
+    int ei, ej;
+    if (bl_polygon_self_intersection(v, nv, 1e-12 * size, &ei, &ej))
+        return bl_error_set(err, "block %d: polygon is self-intersecting (edges %d and %d)",
+                            id, ei + 1, ej + 1);
+    if (!(fabs(area) > 1e-12 * size * size))
+        return bl_error_set(err, "block %d: polygon has zero area", id);
+    if (RESERVE(m->blocks, m->cap_blocks, m->nblocks + 1))
+        return bl_error_set(err, "block %d: out of memory", id);
+    bl_vec2 *copy = malloc((size_t)nv * sizeof *copy);
+    if (!copy) return bl_error_set(err, "block %d: out of memory", id);
+    memcpy(copy, v, (size_t)nv * sizeof *copy);
+    if (area < 0.0) {
+        bl_polygon_reverse(copy, nv);
+        area = -area;
+    }
+    bl_block *b = &m->blocks[m->nblocks++];
+    b->nv = nv;
+    b->v = copy;
+    b->support = support;
+    b->density = density > 0.0 ? density : m->density;
+    b->thickness = thickness > 0.0 ? thickness : m->thickness;
+    b->area = area;
+    b->centroid = bl_polygon_centroid(copy, nv);
+    b->weight = b->density * b->area * b->thickness;
+    memcpy(b->box, box, sizeof box);
+    m->contacts_valid = 0;
+    return 0;
+}
+
+int bl_model_add_interface(bl_model *m, const bl_interface *k, bl_error *err)
+{
+    if (RESERVE(m->interfaces, m->cap_interfaces, m->ninterfaces + 1))
+        return bl_error_set(err, "interface: out of memory");
+    m->interfaces[m->ninterfaces++] = *k;
+    return 0;
+}
+
+int bl_model_add_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
+{
+    if (RESERVE(m->joints, m->cap_joints, m->njoints + 1))
+        return bl_error_set(err, "interface: out of memory");
+    m->joints[m->njoints++] = *s;
+    m->contacts_valid = 0;
+    return 0;
+}
+
+int bl_model_add_point_load(bl_model *m, const bl_point_load *l, bl_error *err)
+{
+    if (RESERVE(m->loads, m->cap_loads, m->nloads + 1))
+        return bl_error_set(err, "load: out of memory");
+    m->loads[m->nloads++] = *l;
+    return 0;
+}
+
+double bl_model_size(const bl_model *m)
+{
+    if (m->nblocks == 0) return 0.0;
+    double box[4];
+    memcpy(box, m->blocks[0].box, sizeof box);
+    for (int i = 1; i < m->nblocks; i++) {
+        const double *b = m->blocks[i].box;
+        box[0] = fmin(box[0], b[0]);
+        box[1] = fmin(box[1], b[1]);
+        box[2] = fmax(box[2], b[2]);
+        box[3] = fmax(box[3], b[3]);
+    }
+    return hypot(box[2] - box[0], box[3] - box[1]);
+}
+
+bl_vec2 bl_model_gravity(const bl_model *m)
+{
+    double c = cos(m->tilt), s = sin(m->tilt);
+    return bl_v2(c * m->gravity.x - s * m->gravity.y, s * m->gravity.x + c * m->gravity.y);
+}
+
+int bl_model_free_blocks(const bl_model *m)
+{
+    int n = 0;
+    for (int i = 0; i < m->nblocks; i++) n += !m->blocks[i].support;
+    return n;
+}

@@ -1,0 +1,106 @@
+/* model.h - a 2D assembly of rigid blocks: blocks, interfaces, loads, material.
+ *
+ * Blocks are numbered from 0 in the order they are added (the Lua side shows
+ * them from 1).  A support block is fixed and carries no unknowns.  The model
+ * owns every array it points to; bl_model_free releases them all. */
+#ifndef BL_MODEL_H
+#define BL_MODEL_H
+
+#include "error.h"
+#include "geometry.h"
+
+typedef struct bl_block {
+    int nv;
+    bl_vec2 *v;          /* owned; counter-clockwise */
+    int support;
+    double density;      /* weight per unit volume */
+    double thickness;    /* out of plane */
+    double area;
+    bl_vec2 centroid;
+    double weight;       /* density * area * thickness */
+    double box[4];       /* bounding box */
+} bl_block;
+
+/* An interface joins block a (minus side) and block b (plus side).  Its unit
+ * normal points from a into b; the tangent is the normal turned by +90
+ * degrees.  The contact region is the segment p[0]-p[1]; the vertex model
+ * puts one contact force at each end. */
+typedef struct bl_interface {
+    int a, b;
+    bl_vec2 p[2];
+    bl_vec2 normal;
+    double mu;           /* friction coefficient; INFINITY: no sliding */
+    double cohesion;     /* per unit area of the joint */
+    int manual;          /* declared by interface{ points = ... } */
+} bl_interface;
+
+/* A user setting for the interfaces between two blocks, kept across
+ * re-detection: a friction or cohesion override, or (with npoints == 2) a
+ * joint declared by hand that replaces the detected ones. */
+typedef struct bl_joint_spec {
+    int a, b;
+    int has_mu, has_cohesion;
+    double mu, cohesion;
+    int npoints;
+    bl_vec2 p[2];
+} bl_joint_spec;
+
+typedef struct bl_point_load {
+    int block;
+    bl_vec2 at, force;
+    int live;
+} bl_point_load;
+
+typedef struct bl_model {
+    char name[64];
+    /* material defaults, applied to blocks and interfaces as they are made */
+    double mu, cohesion, density, thickness;
+    bl_vec2 gravity;     /* unit vector of the dead load (before tilt) */
+    double tilt;         /* radians, rotates gravity counter-clockwise */
+
+    int nblocks, cap_blocks;
+    bl_block *blocks;
+
+    int ninterfaces, cap_interfaces;
+    bl_interface *interfaces;
+    int contacts_valid;  /* interfaces are up to date with the blocks */
+    double contact_tol, contact_gap; /* absolute; 0 = defaults */
+
+    int njoints, cap_joints;
+    bl_joint_spec *joints;
+
+    int self_weight;     /* dead load: self weight along gravity */
+    int live_weight;     /* live load: weight along live_dir */
+    bl_vec2 live_dir;    /* unit */
+    int nloads, cap_loads;
+    bl_point_load *loads;
+} bl_model;
+
+/* Defaults: mu 0.65, no cohesion, density 1, thickness 1, gravity (0,-1),
+ * self weight as dead load, horizontal live load along +x. */
+bl_model *bl_model_new(void);
+void bl_model_free(bl_model *m);
+/* Deep copy (NULL when out of memory). */
+bl_model *bl_model_copy(const bl_model *m);
+
+/* Adds a block.  Validates the polygon (at least 3 points, simple, non-zero
+ * area), puts it counter-clockwise, computes area, centroid, weight.
+ * density or thickness <= 0 takes the model's default. */
+int bl_model_add_block(bl_model *m, const bl_vec2 *v, int nv, int support,
+                       double density, double thickness, bl_error *err);
+
+/* Appends an interface (used by contact detection). */
+int bl_model_add_interface(bl_model *m, const bl_interface *k, bl_error *err);
+
+/* Records a joint spec (see bl_joint_spec) and invalidates interfaces. */
+int bl_model_add_joint(bl_model *m, const bl_joint_spec *s, bl_error *err);
+
+int bl_model_add_point_load(bl_model *m, const bl_point_load *l, bl_error *err);
+
+/* Size of the model: the diagonal of the bounding box of all blocks. */
+double bl_model_size(const bl_model *m);
+/* Current direction of the dead load (gravity turned by tilt). */
+bl_vec2 bl_model_gravity(const bl_model *m);
+int bl_model_free_blocks(const bl_model *m);
+
+#endif

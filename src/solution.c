@@ -1,0 +1,99 @@
+#include "solution.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+static const char *const status_names[] = {
+    [BL_OPTIMAL] = "optimal",
+    [BL_UNSTABLE] = "unstable",
+    [BL_UNBOUNDED] = "unbounded",
+    [BL_INFEASIBLE] = "infeasible",
+    [BL_ITERATION_LIMIT] = "iteration limit",
+    [BL_INTERRUPTED] = "interrupted",
+    [BL_NUMERICAL] = "numerical trouble",
+};
+
+static const char *const status_sentences[] = {
+    [BL_OPTIMAL] = "collapse load multiplier found",
+    [BL_UNSTABLE] = "alpha < 0: the structure cannot stand under its dead load alone",
+    [BL_UNBOUNDED] = "no collapse: the live load cannot produce a mechanism, however large",
+    [BL_INFEASIBLE] = "no equilibrium for any alpha: the dead and live loads cannot both be carried",
+    [BL_ITERATION_LIMIT] = "stopped at the iteration limit before an answer was found",
+    [BL_INTERRUPTED] = "interrupted by the user before an answer was found",
+    [BL_NUMERICAL] = "the LP engine failed numerically; no answer",
+};
+
+const char *bl_status_name(bl_status s) { return status_names[s]; }
+const char *bl_status_sentence(bl_status s) { return status_sentences[s]; }
+
+const char *bl_state_name(bl_state s)
+{
+    static const char *const names[] = {"closed", "rocking", "sliding", "separating"};
+    return names[s];
+}
+
+void bl_solution_free(bl_solution *s)
+{
+    if (!s) return;
+    bl_model_free(s->model);
+    free(s->u);
+    free(s->force);
+    free(s->state);
+    free(s->hinge);
+    free(s);
+}
+
+bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec2 p)
+{
+    bl_vec2 v[2];
+    int blk[2] = {a, b};
+    for (int i = 0; i < 2; i++) {
+        const double *u = s->u + 3 * blk[i];
+        bl_vec2 r = bl_v2_sub(p, s->model->blocks[blk[i]].centroid);
+        v[i] = bl_v2(u[0] - u[2] * r.y, u[1] + u[2] * r.x);
+    }
+    return bl_v2_sub(v[1], v[0]);
+}
+
+/* Relative threshold below which a relative velocity counts as zero. */
+#define MOTION_THRESHOLD 1e-5
+
+void bl_solution_classify(bl_solution *s)
+{
+    const bl_model *m = s->model;
+    double vmax = 0.0;
+    for (int k = 0; k < m->ninterfaces; k++)
+        for (int e = 0; e < 2; e++) {
+            const bl_interface *in = &m->interfaces[k];
+            vmax = fmax(vmax, bl_v2_norm(bl_solution_relative_velocity(s, in->a, in->b, in->p[e])));
+        }
+    double eps = MOTION_THRESHOLD * vmax;
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        bl_vec2 tau = bl_v2(-in->normal.y, in->normal.x);
+        int open = 0, sliding = 0, closed_end = -1;
+        for (int e = 0; e < 2; e++) {
+            bl_vec2 d = bl_solution_relative_velocity(s, in->a, in->b, in->p[e]);
+            double dn = bl_v2_dot(d, in->normal), dt = fabs(bl_v2_dot(d, tau));
+            double mu = isinf(in->mu) ? 0.0 : in->mu;
+            if (bl_v2_norm(d) <= eps) {
+                closed_end = e;
+            } else if (dt > eps && dn <= mu * dt + eps) {
+                sliding++;
+            } else {
+                open++;
+            }
+        }
+        s->hinge[k] = -1;
+        if (sliding) {
+            s->state[k] = BL_SLIDING;
+        } else if (open == 2) {
+            s->state[k] = BL_SEPARATING;
+        } else if (open == 1) {
+            s->state[k] = BL_ROCKING;
+            s->hinge[k] = closed_end;
+        } else {
+            s->state[k] = BL_CLOSED;
+        }
+    }
+}

@@ -1,0 +1,79 @@
+/* solution.h - the answer of a solve: multiplier, forces, mechanism,
+ * interface states, verification and timings.
+ *
+ * A solution owns a copy of the model it was computed for, so that drawing
+ * and reporting stay correct when the user edits the model afterwards. */
+#ifndef BL_SOLUTION_H
+#define BL_SOLUTION_H
+
+#include "model.h"
+
+typedef enum bl_status {
+    BL_OPTIMAL,      /* alpha >= 0 found */
+    BL_UNSTABLE,     /* alpha < 0: cannot stand under dead load alone */
+    BL_UNBOUNDED,    /* the live load cannot produce a mechanism */
+    BL_INFEASIBLE,   /* no equilibrium for any alpha */
+    BL_ITERATION_LIMIT,
+    BL_INTERRUPTED,
+    BL_NUMERICAL     /* the LP engine failed */
+} bl_status;
+
+/* The status word the Lua side shows ("optimal", "unstable", ...) and a
+ * sentence that explains it. */
+const char *bl_status_name(bl_status s);
+const char *bl_status_sentence(bl_status s);
+
+typedef enum bl_state {
+    BL_CLOSED,       /* no relative motion */
+    BL_ROCKING,      /* one end opens, a hinge at the other */
+    BL_SLIDING,      /* tangential relative motion */
+    BL_SEPARATING    /* both ends open */
+} bl_state;
+
+const char *bl_state_name(bl_state s);
+
+/* Residuals of DESIGN 2.6, each scaled to be unit-free (doc/theory.md). */
+typedef struct bl_residuals {
+    double equilibrium;     /* |A x + alpha fL + fD| / W0 */
+    double yield;           /* bound violation / W0 */
+    double admissibility;   /* interpenetration / V */
+    double complementarity; /* max |x_j (A^T u)_j| / (X V) */
+    double normalization;   /* |fL . u - 1| */
+    double work;            /* |alpha fL.u + fD.u + D| / |alpha fL . u| + |fD.u| */
+} bl_residuals;
+
+typedef struct bl_timings {
+    double detection, assembly, solve, verification, total;
+} bl_timings;
+
+typedef struct bl_solution {
+    bl_model *model;         /* owned copy, interfaces detected */
+    bl_status status;
+    double alpha;
+    int has_mechanism;       /* u, state and hinge are meaningful */
+    double *u;               /* 3 per block: vx, vy, omega (1/force units,
+                                live load does unit work); 0 for supports */
+    double *force;           /* 4 per interface: n0, t0, n1, t1 at p[0], p[1] */
+    bl_state *state;         /* per interface */
+    int *hinge;              /* per interface: 0 or 1 for a rocking joint's
+                                closed end, -1 otherwise */
+    bl_residuals res;
+    double tolerance;        /* what "verified" was judged against */
+    int verified;
+    bl_timings time;
+    int iterations;          /* LP engine iterations */
+    int rows, cols;          /* size of the LP */
+    const char *lp;          /* engine name, static */
+} bl_solution;
+
+void bl_solution_free(bl_solution *s);
+
+/* Relative velocity of block b with respect to block a at point p,
+ * from the mechanism u (either block may be a support). */
+bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec2 p);
+
+/* Classifies every interface from the mechanism (doc/theory.md, "states"):
+ * fills state and hinge. */
+void bl_solution_classify(bl_solution *s);
+
+#endif

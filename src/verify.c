@@ -1,0 +1,68 @@
+#include "verify.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+int bl_verify(const bl_system *s, double alpha, const double *x, const double *y, double tol,
+              bl_residuals *res)
+{
+    double *r = malloc((size_t)(s->nrows > s->nforce ? s->nrows : s->nforce + 1) * sizeof *r);
+    if (!r) {
+        res->equilibrium = res->yield = res->admissibility = res->complementarity =
+            res->normalization = res->work = INFINITY;
+        return 0;
+    }
+
+    /* Equilibrium, in units of the typical block weight W0. */
+    bl_system_residual(s, x, alpha, r);
+    double eq = 0.0;
+    for (int i = 0; i < s->nrows; i++) eq = fmax(eq, fabs(r[i]));
+
+    /* Yield: how far a force column lies outside its bounds. */
+    double yield = 0.0, X = 0.0;
+    for (int j = 0; j < s->nforce; j++) {
+        yield = fmax(yield, fmax(s->lo[j] - x[j], x[j] - s->hi[j]));
+        X = fmax(X, fabs(x[j]));
+    }
+    if (X == 0.0) X = 1.0;
+
+    /* Kinematics: w_j = (A^T y)_j is the power of a unit value of column j,
+     * the relative velocity along the column's force direction.  V is the
+     * velocity scale: the largest block velocity (omega times L0). */
+    double V = 0.0;
+    for (int i = 0; i < s->nrows; i++) V = fmax(V, fabs(y[i]));
+    if (V == 0.0) V = 1.0;
+    double *w = r;
+    bl_system_power(s, y, w);
+    double adm = 0.0, comp = 0.0, dissipation = 0.0;
+    for (int j = 0; j < s->nforce; j++) {
+        int lower = isfinite(s->lo[j]), upper = isfinite(s->hi[j]);
+        if (lower && !upper) {          /* x >= lo: needs w >= 0, x w = 0 */
+            adm = fmax(adm, -w[j] / V);
+            comp = fmax(comp, fabs((x[j] - s->lo[j]) * w[j]) / (X * V));
+        } else if (!lower && !upper) {  /* free: needs w = 0 */
+            adm = fmax(adm, fabs(w[j]) / V);
+        } else {                        /* lo <= x <= hi: x = lo where w > 0, hi where w < 0 */
+            double cap = w[j] > 0.0 ? s->lo[j] : s->hi[j];
+            comp = fmax(comp, fabs((cap - x[j]) * w[j]) / (X * V));
+            dissipation -= cap * w[j];  /* C |w|: the resisting force opposes the motion */
+        }
+    }
+
+    /* Normalization and the virtual-work balance: the static alpha equals
+     * the kinematic one, (dissipation - fD . u) / fL . u. */
+    double fLu = 0.0, fDu = 0.0;
+    for (int j = s->colptr[s->nforce]; j < s->colptr[s->nforce + 1]; j++)
+        fLu += s->val[j] * y[s->rowind[j]];
+    for (int i = 0; i < s->nrows; i++) fDu -= s->rhs[i] * y[i];
+    double scale = fabs(alpha * fLu) + fabs(fDu) + fabs(dissipation);
+    res->equilibrium = eq;
+    res->yield = fmax(yield, 0.0);
+    res->admissibility = fmax(adm, 0.0);
+    res->complementarity = comp;
+    res->normalization = fabs(fLu - 1.0);
+    res->work = scale > 0.0 ? fabs(alpha * fLu + fDu - dissipation) / scale : 0.0;
+    free(r);
+    return res->equilibrium <= tol && res->yield <= tol && res->admissibility <= tol &&
+           res->complementarity <= tol && res->normalization <= tol && res->work <= tol;
+}

@@ -1,0 +1,34 @@
+-- A semicircular arch with radial joints under self weight (DESIGN.md 5):
+-- the least thickness t/R tends to 0.1075 (Milankovitch) as the voussoirs
+-- multiply; with 101 voussoirs it must be within 0.0005 of it.  Found here by
+-- bisection on the sign of the horizontal multiplier, which is positive
+-- when the arch can stand; a thinner arch has no equilibrium at all (the
+-- admissible multipliers form an interval symmetric about zero).  With mu = 0.6 the mechanism at the least
+-- thickness is a pure rotation: no interface slides.
+package.path = (arg[0]:match("(.*/)") or "./") .. "?.lua;" .. package.path
+local T = require "tap"
+
+local function arch_alpha(t, n, mu)
+  model { mu = mu }
+  arch { n = n, radius = 1, thickness = t }
+  return solve {}
+end
+
+local function stands(t)
+  local r = arch_alpha(t, 101, 0.6)
+  return r.status == "optimal" and r.alpha > 0
+end
+local lo, hi = 0.05, 0.2
+T.ok(stands(hi), "t/R = 0.2 stands")
+T.eq(arch_alpha(lo, 101, 0.6).status, "infeasible", "t/R = 0.05 has no equilibrium")
+for _ = 1, 14 do
+  local mid = (lo + hi) / 2
+  if stands(mid) then hi = mid else lo = mid end
+end
+T.near((lo + hi) / 2, 0.1075, 0.0005, "least thickness t/R with 101 voussoirs", 1)
+
+local r = arch_alpha(hi, 101, 0.6)
+T.eq(r.states.sliding, 0, "no sliding at the least thickness with mu = 0.6")
+T.ok(r.states.rocking >= 4, "at least four hinges", ("%d rocking joints"):format(r.states.rocking))
+T.residuals(r, 1e-7, "arch answer verified")
+T.done()

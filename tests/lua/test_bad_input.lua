@@ -1,0 +1,66 @@
+-- Bad input: every constructor rejects wrong types, missing and unknown
+-- fields, degenerate polygons and negative material values with a message
+-- naming the function and the field, and the model stays as it was.
+package.path = (arg[0]:match("(.*/)") or "./") .. "?.lua;" .. package.path
+local T = require "tap"
+
+local m = model { mu = 0.5 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+local before = solve {}.alpha
+local function same(label)
+  local st = m:stats()
+  T.ok(st.blocks == 1 and st.supports == 1 and st.interfaces == 1 and
+       solve {}.alpha == before, label .. ": model unchanged")
+end
+
+local bad = {
+  { "model", function() model { mu = -1 } end, "model", "'mu'", ">= 0" },
+  { "model", function() model { density = -2 } end, "model", "'density'" },
+  { "model", function() model { density = "heavy" } end, "model", "'density'", "number" },
+  { "model", function() model { friction = 0.6 } end, "model", "unknown field 'friction'" },
+  { "model", function() model { dim = 4 } end, "model", "'dim'" },
+  { "model", function() model { gravity = { 0 } } end, "model", "'gravity'" },
+  { "block", function() block { vertices = { { 0, 0 }, { 1, 0 } } } end,
+    "block", "'vertices'", "at least 3" },
+  { "block", function() block {} end, "block", "'vertices'", "missing" },
+  { "block", function() block { vertices = "square" } end, "block", "'vertices'" },
+  { "block", function() block { vertices = { { 0, 0 }, { 1, 0 }, { 1, "x" } } } end,
+    "block", "'vertices' point 3" },
+  { "block", function() block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 } }, weight = 3 } end,
+    "block", "unknown field 'weight'" },
+  { "block", function() block { vertices = { { 0, 0 }, { 1, 1 }, { 1, 0 }, { 0, 1 } } } end,
+    "block", "self-intersecting" },
+  { "block", function() block { vertices = { { 0, 0 }, { 1, 0 }, { 2, 0 } } } end,
+    "block", "zero area" },
+  { "block", function() block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 } }, density = -1 } end,
+    "block", "'density'" },
+  { "block", function() block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 } }, support = 1 } end,
+    "block", "'support'" },
+  { "interface", function() interface { 1, 2, mu = -0.1 } end, "interface", "'mu'" },
+  { "interface", function() interface { 1, 9, mu = 0.1 } end, "interface", "entry 2" },
+  { "interface", function() interface { 1, 2, muu = 0.1 } end, "interface", "unknown field 'muu'" },
+  { "interface", function() interface { 1, 2 } end, "interface", "'mu'" },
+  { "load", function() load { live = "sideways" } end, "load", "'live'", "horizontal" },
+  { "load", function() load { live = { block = 1, at = { 0, 0 } } } end, "load live", "'force'" },
+  { "load", function() load { live = { block = 2, at = { 0, 0 }, force = { 1, 0 } } } end,
+    "load live", "support" },
+  { "load", function() load { tilt = "steep" } end, "load", "'tilt'" },
+  { "load", function() load { direction = { 0, 0 }, live = "horizontal" } end, "load", "'direction'" },
+  { "contacts", function() contacts { tol = -1 } end, "contacts", "'tol'" },
+  { "solve", function() solve { flow = "magic" } end, "solve", "'flow'", "associative" },
+  { "solve", function() solve { tolerance = 0 } end, "solve", "'tolerance'" },
+  { "solve", function() solve { iterations = 3 } end, "solve", "unknown field 'iterations'" },
+  { "wall", function() wall { courses = { { 1, "a" } } } end, "wall", "'courses'" },
+  { "wall", function() wall { courses = { { 1 } }, unit = { 0.4 } } end, "wall", "'unit'" },
+  { "wall", function() wall { coarses = {} } end, "wall", "unknown field 'coarses'" },
+  { "arch", function() arch { n = 0, radius = 1, thickness = 0.1 } end, "arch", "'n'" },
+  { "arch", function() arch { n = 5, thickness = 0.1 } end, "arch", "'radius'" },
+  { "arch", function() arch { n = 5, radius = 1, thickness = -0.1 } end, "arch", "'thickness'" },
+}
+for i, case in ipairs(bad) do
+  T.raises(case[2], ("%s rejects bad input %d"):format(case[1], i), table.unpack(case, 3))
+  if case[1] ~= "model" then same(("%s case %d"):format(case[1], i)) end
+end
+T.ok(current() == m, "a rejected model{} does not replace the current model")
+T.done()

@@ -1,0 +1,77 @@
+-- Closed forms of DESIGN.md 5: a single block, a column of blocks, tilting,
+-- cohesion and a point load.  Tolerance 1e-9 relative: the LP is solved to
+-- 1e-9 feasibility on data of order one, so a correct formulation lands
+-- within a few ulps times the condition number.
+package.path = (arg[0]:match("(.*/)") or "./") .. "?.lua;" .. package.path
+local T = require "tap"
+
+-- A b x h block (or a column of k such blocks) on a wide fixed base.
+local function column(b, h, k, fields)
+  local m = model(fields)
+  for i = 0, k - 1 do
+    block { vertices = { { 0, i * h }, { b, i * h }, { b, (i + 1) * h }, { 0, (i + 1) * h } } }
+  end
+  block { vertices = { { -b, -h }, { 2 * b, -h }, { 2 * b, 0 }, { -b, 0 } }, support = true }
+  return m
+end
+
+for _, ratio in ipairs { 0.15, 0.4, 0.65, 1.0, 1.7 } do
+  for _, mu in ipairs { 0.1, 0.3, 0.65, 1.2 } do
+    column(ratio * 0.8, 0.8, 1, { mu = mu })
+    local r = solve {}
+    T.near(r.alpha, math.min(mu, ratio), 1e-9,
+           ("single block b/h = %g, mu = %g: alpha = min(mu, b/h)"):format(ratio, mu))
+    load { live = "horizontal", direction = { -1, 0 } }
+    T.near(solve {}.alpha, math.min(mu, ratio), 1e-9,
+           ("single block b/h = %g, mu = %g, load towards -x"):format(ratio, mu))
+  end
+end
+
+for _, k in ipairs { 2, 3, 5, 8 } do
+  for _, mu in ipairs { 0.2, 0.65 } do
+    column(0.5, 0.3, k, { mu = mu })
+    T.near(solve {}.alpha, math.min(mu, 0.5 / (0.3 * k)), 1e-9,
+           ("column of %d blocks, mu = %g: alpha = min(mu, b/H)"):format(k, mu))
+  end
+end
+
+-- Tilting gravity by theta: a cohesionless assembly carries W (sin, -cos)
+-- plus alpha' W along x exactly when the horizontal multiplier alpha_h
+-- satisfies (sin + alpha') / cos = alpha_h, so alpha' = alpha_h cos - sin,
+-- and alpha' = 0 at tan(theta) = alpha_h.
+for _, case in ipairs { { 0.3, 2, 0.65 }, { 0.5, 3, 0.2 }, { 1.0, 1, 0.9 } } do
+  local b, k, mu = case[1], case[2], case[3]
+  column(b, 0.3, k, { mu = mu })
+  local ah = solve {}.alpha
+  for _, deg in ipairs { 3, 10 } do
+    load { tilt = deg }
+    local th = math.rad(deg)
+    T.near(solve {}.alpha, ah * math.cos(th) - math.sin(th), 1e-9,
+           ("tilt %g deg, %d blocks, mu = %g: alpha = alpha_h cos - sin"):format(deg, k, mu), 1)
+  end
+  load { tilt = math.deg(math.atan(ah)) }
+  T.near(solve {}.alpha, 0, 1e-9,
+         ("tilt atan(alpha_h) on %d blocks, mu = %g: alpha = 0"):format(k, mu))
+end
+
+-- Cohesion c adds c * b * thickness to the sliding capacity, nothing to
+-- rocking: alpha = min(mu + c b t / W, b/h) with W = density b h t.
+for _, c in ipairs { 0.05, 0.2 } do
+  column(1.0, 0.5, 1, { mu = 0.3, cohesion = c, density = 2, thickness = 0.5 })
+  local W = 2 * 1.0 * 0.5 * 0.5
+  T.near(solve {}.alpha, math.min(0.3 + c * 1.0 * 0.5 / W, 2), 1e-9,
+         ("cohesion %g: alpha = mu + c b t / W"):format(c))
+end
+
+-- A live point force F at height y on a b x h block: rocking when
+-- F y alpha = W b / 2, sliding when F alpha = mu W.
+for _, y in ipairs { 0.2, 0.5, 1.0 } do
+  column(0.4, 1.0, 1, { mu = 0.65 })
+  load { live = "none" }
+  load { live = { block = 1, at = { 0.1, y }, force = { 2, 0 } } }
+  local W = 0.4
+  T.near(solve {}.alpha, math.min(W * 0.2 / (2 * y), 0.65 * W / 2), 1e-9,
+         ("point load at height %g: alpha = min(W b / (2 F y), mu W / F)"):format(y))
+end
+
+T.done()

@@ -1,0 +1,69 @@
+-- Interface detection: T-junctions, partial overlaps, several interfaces
+-- between two blocks, overrides, and the modelling mistakes reported with
+-- block numbers before any solve.
+package.path = (arg[0]:match("(.*/)") or "./") .. "?.lua;" .. package.path
+local T = require "tap"
+
+local function rect(x0, y0, x1, y1, support)
+  return block { vertices = { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } }, support = support }
+end
+
+-- Two blocks side by side under one spanning block: base-1, base-2, 1-2,
+-- 3-1, 3-2 (the last two end at the T-junction of the head joint).
+model {}
+rect(0, 0, 1, 1); rect(1, 0, 2, 1); rect(0, 1, 2, 2); rect(-1, -1, 3, 0, true)
+T.eq(contacts {}, 5, "T-junction: 5 interfaces")
+local r = solve {}
+local lengths = {}
+for _, k in ipairs(r.interfaces) do
+  local p, q = k.points[1], k.points[2]
+  lengths[#lengths + 1] = math.sqrt((p[1] - q[1]) ^ 2 + (p[2] - q[2]) ^ 2)
+end
+table.sort(lengths)
+T.ok(math.abs(lengths[1] - 1) < 1e-12 and math.abs(lengths[5] - 1) < 1e-12,
+     "T-junction: every joint has length 1")
+
+-- Partial overlap: the top block shifted by 0.3 sits on 0.7 of the lower.
+model {}
+rect(0, 0, 1, 1); rect(0.3, 1, 1.3, 2); rect(-1, -1, 3, 0, true)
+r = solve {}
+local top
+for _, k in ipairs(r.interfaces) do if k.a + k.b == 3 then top = k end end
+T.ok(top and math.abs(math.abs(top.points[1][1] - top.points[2][1]) - 0.7) < 1e-12,
+     "partial overlap: joint of length 0.7")
+-- Rocking of the top block about the lower block's corner x = 1:
+-- its centroid is 0.5 above, 0.2 left of it: alpha = 0.2 / 0.5.
+model { mu = 5 }
+rect(0, 0, 1, 1, true); rect(0.3, 1, 1.3, 2)
+T.near(solve {}.alpha, 0.4, 1e-9, "partial overlap: rocking about the corner, alpha = 0.4")
+
+-- A block with two legs on one support: two interfaces between one pair.
+model {}
+block { vertices = { { 0, 0 }, { 0.3, 0 }, { 0.3, 0.5 }, { 0.7, 0.5 }, { 0.7, 0 }, { 1, 0 },
+                     { 1, 1 }, { 0, 1 } } }
+rect(-1, -1, 2, 0, true)
+T.eq(contacts {}, 2, "two legs: two interfaces between the same two blocks")
+
+-- A friction override on one pair.
+model { mu = 0.65 }
+rect(0, 0, 1, 3); rect(-1, -1, 2, 0, true)
+interface { 1, 2, mu = 0.1 }
+T.near(solve {}.alpha, 0.1, 1e-9, "interface{ mu = 0.1 } overrides the model's mu")
+-- A joint declared by hand: only the left half of the base joint.
+model { mu = 5 }
+rect(0, 0, 1, 1); rect(-1, -1, 2, 0, true)
+interface { 1, 2, points = { { 0, 0 }, { 0.5, 0 } } }
+T.near(solve {}.alpha, 0.0, 1e-9, "hand-made joint under the left half: alpha = 0 (hinge below centroid)")
+
+-- Mistakes: a near-miss, an overlap, a floating block.
+model {}
+rect(0, 1e-4, 1, 1); rect(-1, -1, 2, 0, true)
+T.raises(function() contacts {} end, "near-miss reported", "near-miss", "blocks 1 and 2")
+T.eq(contacts { tol = 1e-3 }, 1, "a larger tol closes the gap")
+model {}
+rect(0, -0.1, 1, 1); rect(-1, -1, 2, 0, true)
+T.raises(function() solve {} end, "overlap reported before the solve", "overlapping", "blocks 1 and 2")
+model {}
+rect(0, 0, 1, 1); rect(-1, -1, 2, 0, true); rect(5, 5, 6, 6)
+T.raises(function() stats() end, "a floating block is reported", "no interface", "block 3")
+T.done()

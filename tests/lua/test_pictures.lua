@@ -1,0 +1,32 @@
+-- Pictures of a mechanism: r:svg and r:png write well-formed files, and bad
+-- arguments are rejected.
+package.path = (arg[0]:match("(.*/)") or "./") .. "?.lua;" .. package.path
+local T = require "tap"
+local walls = require "walls"
+
+local dir = os.getenv("TMPDIR") or "/tmp"
+local svg, png = dir .. "/blocklim_test_w4.svg", dir .. "/blocklim_test_w4.png"
+os.remove(svg); os.remove(png)
+model { mu = 0.65 }
+wall { courses = walls.W4, unit = { 0.4, 0.175 } }
+local r = solve {}
+r:svg(svg)
+r:png(png, { width = 600 })
+
+local f = io.open(svg, "rb")
+local text = f and f:read("a") or ""
+if f then f:close() end
+T.ok(text:find("<svg", 1, true) and text:find("</svg>", 1, true), "svg: a complete SVG document")
+f = io.open(png, "rb")
+local head = f and f:read(24) or ""
+if f then f:close() end
+T.eq(head:sub(1, 8), "\137PNG\r\n\26\n", "png: PNG signature")
+-- Width in the IHDR chunk (big-endian, bytes 17-20).
+local w = 0
+for i = 17, 20 do w = w * 256 + (head:byte(i) or 0) end
+T.eq(w, 600, "png: the width asked for")
+T.raises(function() r:png("/nonexistent/dir/x.png") end, "png: unwritable file reported", "png", "/nonexistent/dir/x.png")
+T.raises(function() r:svg(42) end, "svg: file name checked", "svg")
+T.raises(function() r:png(png, { size = 3 }) end, "png: unknown option", "unknown field 'size'")
+os.remove(svg); os.remove(png)
+T.done()
