@@ -1,0 +1,12 @@
+-- W4: the seed's model 1 (Ferris & Tin-Loi): 55 blocks of 0.40 x 0.175 m
+-- with two rows of openings, mu = 0.65, horizontal load proportional to
+-- weight.  Published associative alpha 0.33195.
+model { name = "W4", dim = 2, mu = 0.65 }
+local E, U = { .5, 1, 1, 1, 1, .5 }, { 1, 1, 1, 1, 1 }
+local Wu, We = { 1, -1, 1, -1, 1 }, { .5, .5, -1, .5, .5, -1, .5, .5 }
+wall { courses = { E, U, E, Wu, We, Wu, We, Wu, E, U, E }, unit = { 0.4, 0.175 } }
+load { live = "horizontal" }
+local r = solve { flow = "associative" }
+print(r)
+r:png((arg and arg[1]) or "w4.png")
+return r

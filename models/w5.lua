@@ -1,0 +1,11 @@
+-- W5: the seed's model 2: 61 blocks of 0.40 x 0.175 m in a narrow wall with
+-- two storeys of openings, mu = 0.65.  Published associative alpha 0.23964.
+model { name = "W5", dim = 2, mu = 0.65 }
+local E, U, Wu, We = { .5, 1, 1, .5 }, { 1, 1, 1 }, { 1, -1, 1 }, { .5, .5, -1, .5, .5 }
+wall { courses = { E, U, E, Wu, We, Wu, We, Wu, E, U, E, Wu, We, Wu, We, Wu, E, U, E },
+       unit = { 0.4, 0.175 } }
+load { live = "horizontal" }
+local r = solve { flow = "associative" }
+print(r)
+r:png((arg and arg[1]) or "w5.png")
+return r
