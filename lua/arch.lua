@@ -5,6 +5,8 @@
 -- The arch is symmetric about the vertical through the centre; voussoirs are
 -- quadrilaterals between consecutive radial joints; each end joint rests on
 -- a fixed springing block.  Returns the voussoir numbers and the springings.
+local report = require "blocklim.report"
+
 return function(M)
   local allowed = { n = true, radius = true, span = true, thickness = true, angle = true,
                     centre = true, density = true }
@@ -64,6 +66,6 @@ return function(M)
       springs[#springs + 1] = M.block { vertices = { p, q, { q[1] + tx, q[2] + ty },
                                                      { p[1] + tx, p[2] + ty } }, support = true }
     end
-    return blocks, springs
+    return report.blocks(blocks), report.blocks(springs)
   end
 end

@@ -11,7 +11,7 @@ return function(core)
   local solve = methods.solve
   function methods.solve(m, t)
     local r = solve(m, t)
-    return setmetatable(r, report.Result)
+    return report.wrap(r)
   end
   report.draw = core.draw
 
@@ -48,6 +48,7 @@ return function(core)
   M.arch = require("blocklim.arch")(M)
 
   M.version = "0.1"
+  M.clock = core.clock
 
   -- The names the program puts into _G (a script that requires the module
   -- from a stock Lua may do the same: require("blocklim").globals()).

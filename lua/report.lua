@@ -21,8 +21,8 @@ function Result.__tostring(r)
   say("  %s", r.message)
   say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
       r.lp, r.iterations, size.rows, size.columns)
-  local line = ("  %d blocks, %d supports, %d interfaces"):format(size.blocks, size.supports,
-                                                                   size.interfaces)
+  local line = ("  %d blocks, %d support%s, %d interfaces"):format(
+    size.blocks, size.supports, size.supports == 1 and "" or "s", size.interfaces)
   if r.states then
     local s = r.states
     line = line .. (": %d closed, %d rocking, %d sliding, %d separating")
@@ -59,11 +59,43 @@ local function picture(fmt)
       end
     end
     report.draw(r._solution, file, fmt, width)
-    return r
   end
 end
 
 Result.svg = picture("svg")
 Result.png = picture("png")
+
+-- One line per interface and per block velocity, for the prompt.
+local Interface = {}
+function Interface.__tostring(k)
+  local s = ("interface %d-%d: %s, N = %.4g, T = %.4g"):format(k.a, k.b, k.state, k.N, k.T)
+  if k.hinge then s = s .. (", hinge at (%.4g, %.4g)"):format(k.hinge[1], k.hinge[2]) end
+  return s
+end
+local Velocity = {}
+function Velocity.__tostring(u)
+  return ("vx = %.4g, vy = %.4g, omega = %.4g"):format(u[1], u[2], u[3])
+end
+
+-- Lists of block numbers made by a generator print as ranges.
+local Blocks = {}
+function Blocks.__tostring(list)
+  local parts, i = {}, 1
+  while i <= #list do
+    local j = i
+    while j < #list and list[j + 1] == list[j] + 1 do j = j + 1 end
+    parts[#parts + 1] = i == j and tostring(list[i]) or ("%d-%d"):format(list[i], list[j])
+    i = j + 1
+  end
+  return ("%d blocks: %s"):format(#list, table.concat(parts, ", "))
+end
+function report.blocks(list) return setmetatable(list, Blocks) end
+
+-- Gives a fresh result from the core its metatables.
+function report.wrap(r)
+  for _, k in ipairs(r.interfaces or {}) do setmetatable(k, Interface) end
+  for _, u in ipairs(r.mechanism or {}) do setmetatable(u, Velocity) end
+  return setmetatable(r, Result)
+end
 
 return report

@@ -6,6 +6,8 @@
 -- (default 0) and every course starts at x = x0 (default 0).  A fixed base
 -- block of height H spans the widest course unless base = false.
 -- Returns the list of block numbers, bottom course first, and the base.
+local report = require "blocklim.report"
+
 return function(M)
   local allowed = { courses = true, unit = true, base = true, origin = true,
                     density = true, thickness = true }
@@ -67,6 +69,6 @@ return function(M)
       base = M.block { vertices = { { x0, y0 - H }, { x0 + width * L, y0 - H },
                                     { x0 + width * L, y0 }, { x0, y0 } }, support = true }
     end
-    return blocks, base
+    return report.blocks(blocks), base
   end
 end

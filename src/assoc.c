@@ -12,6 +12,7 @@ void bl_solve_options_default(bl_solve_options *o)
 {
     o->tolerance = 1e-7;
     o->verbose = 0;
+    o->time_limit = 0;
 }
 
 static bl_status from_lp(bl_lp_status st)
@@ -21,6 +22,7 @@ static bl_status from_lp(bl_lp_status st)
     case BL_LP_INFEASIBLE: return BL_INFEASIBLE;
     case BL_LP_UNBOUNDED: return BL_UNBOUNDED;
     case BL_LP_ITERATION_LIMIT: return BL_ITERATION_LIMIT;
+    case BL_LP_TIME_LIMIT: return BL_TIME_LIMIT;
     case BL_LP_INTERRUPTED: return BL_INTERRUPTED;
     default: return BL_NUMERICAL;
     }
@@ -66,6 +68,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     bl_lp_settings ls;
     bl_lp_settings_default(&ls);
     ls.verbose = o->verbose;
+    ls.max_seconds = o->time_limit;
     bl_lp_problem p = {sys->nrows, sys->ncols, sys->colptr, sys->rowind, sys->val,
                        sys->lo,    sys->hi,    sys->rhs,    sys->obj};
     bl_lp *lp = bl_lp_create(&p, &ls, err);

@@ -12,6 +12,7 @@
 typedef struct bl_solve_options {
     double tolerance;   /* verification tolerance (default 1e-7) */
     int verbose;        /* let the LP engine print */
+    double time_limit;  /* seconds for the LP, 0: none */
 } bl_solve_options;
 
 void bl_solve_options_default(bl_solve_options *o);

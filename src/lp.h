@@ -22,6 +22,7 @@ typedef struct bl_lp_problem {
 typedef struct bl_lp_settings {
     int verbose;         /* 0: the engine prints nothing */
     int max_iterations;  /* 0: engine default */
+    double max_seconds;  /* 0: no time limit */
     double tolerance;    /* primal and dual feasibility */
 } bl_lp_settings;
 
@@ -32,6 +33,7 @@ typedef enum bl_lp_status {
     BL_LP_INFEASIBLE,
     BL_LP_UNBOUNDED,
     BL_LP_ITERATION_LIMIT,
+    BL_LP_TIME_LIMIT,
     BL_LP_INTERRUPTED,
     BL_LP_FAILED
 } bl_lp_status;

@@ -44,6 +44,7 @@ extern "C" void bl_lp_settings_default(bl_lp_settings *s)
 {
     s->verbose = 0;
     s->max_iterations = 0;
+    s->max_seconds = 0;
     s->tolerance = 1e-9;
 }
 
@@ -74,6 +75,7 @@ extern "C" bl_lp *bl_lp_create(const bl_lp_problem *p, const bl_lp_settings *s, 
         lp->model.setLogLevel(s->verbose ? 1 : 0);
         if (!s->verbose) lp->model.messageHandler()->setLogLevel(0);
         if (s->max_iterations > 0) lp->model.setMaximumIterations(s->max_iterations);
+        if (s->max_seconds > 0) lp->model.setMaximumSeconds(s->max_seconds);
         if (s->tolerance > 0) {
             lp->model.setPrimalTolerance(s->tolerance);
             lp->model.setDualTolerance(s->tolerance);
@@ -124,7 +126,9 @@ extern "C" bl_lp_status bl_lp_solve(bl_lp *lp)
     case 0: return BL_LP_OPTIMAL;
     case 1: return BL_LP_INFEASIBLE;
     case 2: return BL_LP_UNBOUNDED;
-    case 3: return BL_LP_ITERATION_LIMIT;
+    case 3:
+        return lp->model.numberIterations() < lp->model.maximumIterations() ? BL_LP_TIME_LIMIT
+                                                                           : BL_LP_ITERATION_LIMIT;
     case 5: return BL_LP_INTERRUPTED;
     default: return BL_LP_FAILED;
     }

@@ -580,7 +580,8 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
 
 static int model_solve(lua_State *L)
 {
-    static const char *const fields[] = {"flow", "method", "lp", "tolerance", "verbose", NULL};
+    static const char *const fields[] = {"flow", "method", "lp", "tolerance", "time_limit",
+                                         "verbose", NULL};
     static const char *const flows[] = {"associative", NULL};
     static const char *const methods[] = {"assoc", NULL};
     static const char *const lps[] = {"simplex", NULL};
@@ -594,6 +595,7 @@ static int model_solve(lua_State *L)
     bl_solve_options_default(&o);
     o.tolerance = number_field(L, 2, "solve", "tolerance", o.tolerance, POSITIVE);
     o.verbose = boolean_field(L, 2, "solve", "verbose", 0);
+    o.time_limit = number_field(L, 2, "solve", "time_limit", 0, POSITIVE);
 
     bl_solution **box = lua_newuserdatauv(L, sizeof *box, 0);
     *box = NULL;
@@ -627,6 +629,13 @@ static int core_draw(lua_State *L)
     return 0;
 }
 
+/* core.clock() -> wall-clock seconds, for timing scripts */
+static int core_clock(lua_State *L)
+{
+    lua_pushnumber(L, bl_clock());
+    return 1;
+}
+
 /* ---- module ---------------------------------------------------------------- */
 
 extern const struct {
@@ -654,7 +663,8 @@ int luaopen_blocklim(lua_State *L)
         {"block", model_block},         {"contacts", model_contacts}, {"interface", model_interface},
         {"load", model_load},           {"solve", model_solve},       {"stats", model_stats},
         {"block_info", model_block_info}, {NULL, NULL}};
-    static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw}, {NULL, NULL}};
+    static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw},
+                                     {"clock", core_clock}, {NULL, NULL}};
 
     if (luaL_newmetatable(L, MODEL_MT)) {
         lua_pushcfunction(L, model_gc);

@@ -9,6 +9,7 @@ static const char *const status_names[] = {
     [BL_UNBOUNDED] = "unbounded",
     [BL_INFEASIBLE] = "infeasible",
     [BL_ITERATION_LIMIT] = "iteration limit",
+    [BL_TIME_LIMIT] = "time limit",
     [BL_INTERRUPTED] = "interrupted",
     [BL_NUMERICAL] = "numerical trouble",
 };
@@ -19,6 +20,7 @@ static const char *const status_sentences[] = {
     [BL_UNBOUNDED] = "no collapse: the live load cannot produce a mechanism, however large",
     [BL_INFEASIBLE] = "no equilibrium for any alpha: the dead and live loads cannot both be carried",
     [BL_ITERATION_LIMIT] = "stopped at the iteration limit before an answer was found",
+    [BL_TIME_LIMIT] = "stopped at the time limit before an answer was found",
     [BL_INTERRUPTED] = "interrupted by the user before an answer was found",
     [BL_NUMERICAL] = "the LP engine failed numerically; no answer",
 };

@@ -14,6 +14,7 @@ typedef enum bl_status {
     BL_UNBOUNDED,    /* the live load cannot produce a mechanism */
     BL_INFEASIBLE,   /* no equilibrium for any alpha */
     BL_ITERATION_LIMIT,
+    BL_TIME_LIMIT,
     BL_INTERRUPTED,
     BL_NUMERICAL     /* the LP engine failed */
 } bl_status;
