@@ -6,6 +6,7 @@
 #ifndef BL_ASSOC_H
 #define BL_ASSOC_H
 
+#include "lp.h"
 #include "model.h"
 #include "solution.h"
 
@@ -13,6 +14,7 @@ typedef struct bl_solve_options {
     double tolerance;   /* verification tolerance (default 1e-7) */
     int verbose;        /* let the LP engine print */
     double time_limit;  /* seconds for the LP, 0: none */
+    bl_lp_engine_kind lp;
 } bl_solve_options;
 
 void bl_solve_options_default(bl_solve_options *o);

@@ -19,11 +19,18 @@ typedef struct bl_lp_problem {
     const double *lo, *hi, *rhs, *obj;
 } bl_lp_problem;
 
+typedef enum bl_lp_engine_kind {
+    BL_LP_SIMPLEX,       /* CLP: primal simplex cold, dual simplex warm */
+    BL_LP_IPM            /* interior point on CHOLMOD (lp_ipm.c) */
+} bl_lp_engine_kind;
+
 typedef struct bl_lp_settings {
+    bl_lp_engine_kind engine;
     int verbose;         /* 0: the engine prints nothing */
     int max_iterations;  /* 0: engine default */
     double max_seconds;  /* 0: no time limit */
-    double tolerance;    /* primal and dual feasibility */
+    double tolerance;    /* simplex: primal and dual feasibility;
+                            ipm: relative residuals and gap */
 } bl_lp_settings;
 
 void bl_lp_settings_default(bl_lp_settings *s);
@@ -57,7 +64,7 @@ bl_lp_status bl_lp_solve(bl_lp *lp);
 const double *bl_lp_primal(const bl_lp *lp);
 const double *bl_lp_dual(const bl_lp *lp);
 int bl_lp_iterations(const bl_lp *lp);
-/* Name of the engine ("simplex"). */
+/* Name of the engine ("simplex", "ipm"). */
 const char *bl_lp_engine(const bl_lp *lp);
 
 #endif

@@ -584,17 +584,18 @@ static int model_solve(lua_State *L)
                                          "verbose", NULL};
     static const char *const flows[] = {"associative", NULL};
     static const char *const methods[] = {"assoc", NULL};
-    static const char *const lps[] = {"simplex", NULL};
+    static const char *const lps[] = {"simplex", "ipm", NULL};
     bl_model *m = check_model(L, 1);
     if (lua_isnoneornil(L, 2)) lua_newtable(L), lua_replace(L, 2);
     check_fields(L, 2, "solve", fields, 0);
     choice_field(L, 2, "solve", "flow", flows, 0);
     choice_field(L, 2, "solve", "method", methods, 0);
-    choice_field(L, 2, "solve", "lp", lps, 0);
+    int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;
     bl_solve_options_default(&o);
     o.tolerance = number_field(L, 2, "solve", "tolerance", o.tolerance, POSITIVE);
     o.verbose = boolean_field(L, 2, "solve", "verbose", 0);
+    o.lp = lp == 1 ? BL_LP_IPM : BL_LP_SIMPLEX;
     o.time_limit = number_field(L, 2, "solve", "time_limit", 0, POSITIVE);
 
     bl_solution **box = lua_newuserdatauv(L, sizeof *box, 0);

@@ -1,0 +1,54 @@
+/* lp.c - the LP interface: dispatches to the engine chosen in the settings. */
+#include "lp.h"
+
+#include <stdlib.h>
+
+#include "lp_engine.h"
+
+struct bl_lp {
+    const bl_lp_backend *engine;
+    void *impl;
+};
+
+void bl_lp_settings_default(bl_lp_settings *s)
+{
+    s->engine = BL_LP_SIMPLEX;
+    s->verbose = 0;
+    s->max_iterations = 0;
+    s->max_seconds = 0;
+    s->tolerance = 0; /* the engine's own default */
+}
+
+bl_lp *bl_lp_create(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *err)
+{
+    bl_lp *lp = malloc(sizeof *lp);
+    if (!lp) {
+        bl_error_set(err, "lp: out of memory");
+        return NULL;
+    }
+    lp->engine = s->engine == BL_LP_IPM ? &bl_lp_ipm_engine : &bl_lp_clp_engine;
+    lp->impl = lp->engine->create(p, s, err);
+    if (!lp->impl) {
+        free(lp);
+        return NULL;
+    }
+    return lp;
+}
+
+void bl_lp_free(bl_lp *lp)
+{
+    if (!lp) return;
+    lp->engine->free(lp->impl);
+    free(lp);
+}
+
+void bl_lp_set_bounds(bl_lp *lp, const double *lo, const double *hi)
+{
+    lp->engine->set_bounds(lp->impl, lo, hi);
+}
+
+bl_lp_status bl_lp_solve(bl_lp *lp) { return lp->engine->solve(lp->impl); }
+const double *bl_lp_primal(const bl_lp *lp) { return lp->engine->primal(lp->impl); }
+const double *bl_lp_dual(const bl_lp *lp) { return lp->engine->dual(lp->impl); }
+int bl_lp_iterations(const bl_lp *lp) { return lp->engine->iterations(lp->impl); }
+const char *bl_lp_engine(const bl_lp *lp) { return lp->engine->name; }

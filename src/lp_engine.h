@@ -1,0 +1,22 @@
+/* lp_engine.h - what an LP engine provides to lp.c (internal to the lp
+ * module: methods include lp.h only). */
+#ifndef BL_LP_ENGINE_H
+#define BL_LP_ENGINE_H
+
+#include "lp.h"
+
+typedef struct bl_lp_backend {
+    const char *name;
+    void *(*create)(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *err);
+    void (*free)(void *e);
+    void (*set_bounds)(void *e, const double *lo, const double *hi);
+    bl_lp_status (*solve)(void *e);
+    const double *(*primal)(const void *e);
+    const double *(*dual)(const void *e);
+    int (*iterations)(const void *e);
+} bl_lp_backend;
+
+extern const bl_lp_backend bl_lp_clp_engine;
+extern const bl_lp_backend bl_lp_ipm_engine;
+
+#endif
