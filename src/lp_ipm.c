@@ -15,6 +15,7 @@
  *     numerically every iteration.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -23,6 +24,11 @@
 #include "lp_engine.h"
 
 enum { COL_LOWER, COL_BOXED };
+
+/* A Newton direction: internal columns (x, z, s, w), rows (y), border (a). */
+typedef struct step {
+    double *x, *z, *s, *w, *y, a;
+} step;
 
 typedef struct ipm {
     bl_lp_settings set;
@@ -45,7 +51,8 @@ typedef struct ipm {
     double *aval;       /* values of A, in F's pattern */
     /* iterates and work */
     double *x, *z, *s, *w, *y, a;
-    double *theta, *rd, *rp, *ru, *rhat, *dx, *dz, *ds, *dw, *dy, *xz, *sw, *v, *tmp;
+    double *theta, *rd, *rp, *ru, *rhat, *xz, *sw, *v, *tmp;
+    step dir, cor;      /* the direction and a centrality corrector */
     double *xu, *yu;    /* answers in user terms */
     int iterations;
 } ipm;
@@ -62,8 +69,9 @@ static void destroy(void *e)
     double **d[] = {&p->uval, &p->lo,    &p->hi, &p->rhs,  &p->obj, &p->sign, &p->shift,
                     &p->U,    &p->c,     &p->b,  &p->g,    &p->aval, &p->x,   &p->z,
                     &p->s,    &p->w,     &p->y,  &p->theta, &p->rd,  &p->rp,  &p->ru,
-                    &p->rhat, &p->dx,    &p->dz, &p->ds,   &p->dw,   &p->dy,  &p->xz,
-                    &p->sw,   &p->v,     &p->tmp, &p->xu,  &p->yu};
+                    &p->rhat, &p->xz,    &p->sw, &p->v,    &p->tmp,  &p->xu,  &p->yu,
+                    &p->dir.x,  &p->dir.z,   &p->dir.s, &p->dir.w, &p->dir.y,  &p->cor.x, &p->cor.z,
+                    &p->cor.s,  &p->cor.w,   &p->cor.y};
     for (size_t i = 0; i < sizeof d / sizeof *d; i++) free(*d[i]);
     free(p->ucp);
     free(p->uri);
@@ -142,8 +150,9 @@ static int build(ipm *p, bl_error *err)
     memcpy(p->F->x, p->aval, (size_t)q * sizeof *p->aval);
 
     size_t nn = (size_t)n;
-    double **arr[] = {&p->x, &p->z, &p->s, &p->w, &p->theta, &p->rd, &p->rhat,
-                      &p->dx, &p->dz, &p->ds, &p->dw, &p->xz, &p->sw, &p->ru};
+    double **arr[] = {&p->x,   &p->z,   &p->s,   &p->w,   &p->theta, &p->rd,  &p->rhat,
+                      &p->xz,  &p->sw,  &p->ru,  &p->dir.x, &p->dir.z,   &p->dir.s, &p->dir.w,
+                      &p->cor.x, &p->cor.z, &p->cor.s, &p->cor.w};
     for (size_t i = 0; i < sizeof arr / sizeof *arr; i++) {
         free(*arr[i]);
         *arr[i] = xcalloc(nn, sizeof(double));
@@ -187,13 +196,14 @@ static void *create(const bl_lp_problem *pr, const bl_lp_settings *s, bl_error *
     p->b = xcalloc(m, sizeof *p->b);
     p->g = xcalloc(m, sizeof *p->g);
     p->y = xcalloc(m, sizeof *p->y);
-    p->dy = xcalloc(m, sizeof *p->dy);
+    p->dir.y = xcalloc(m, sizeof *p->dir.y);
+    p->cor.y = xcalloc(m, sizeof *p->cor.y);
     p->rp = xcalloc(m, sizeof *p->rp);
     p->v = xcalloc(m, sizeof *p->v);
     p->tmp = xcalloc(m, sizeof *p->tmp);
     p->yu = xcalloc(m, sizeof *p->yu);
     if (!p->ucp || !p->uri || !p->uval || !p->lo || !p->hi || !p->obj || !p->shift || !p->xu ||
-        !p->rhs || !p->b || !p->g || !p->y || !p->dy || !p->rp || !p->v || !p->tmp || !p->yu) {
+        !p->rhs || !p->b || !p->g || !p->y || !p->dir.y || !p->cor.y || !p->rp || !p->v || !p->tmp || !p->yu) {
         bl_error_set(err, "lp: out of memory");
         destroy(p);
         return NULL;
@@ -303,32 +313,34 @@ static int msolve(ipm *p, double *rhs)
     return 0;
 }
 
-/* One Newton direction for the complementarity targets xz (n) and sw (n,
- * boxed columns), given the residuals; v = M^-1 g must be current. */
-static int direction(ipm *p, double ra, double gv)
+/* One Newton direction into d for the complementarity targets xz (n) and
+ * sw (n, boxed columns).  With full = 1 it also removes the residuals rp,
+ * rd, ru and ra; with full = 0 it is a pure centrality correction.
+ * v = M^-1 g and gv = g.v must be current.  Returns 0 or -1. */
+static int direction(ipm *p, step *d, int full, double ra, double gv)
 {
-    int n = p->n;
+    int n = p->n, m = p->m;
     for (int j = 0; j < n; j++) {
-        double r = p->rd[j] - p->xz[j] / p->x[j];
-        if (p->kind[j] == COL_BOXED) r += (p->sw[j] - p->w[j] * p->ru[j]) / p->s[j];
+        double r = (full ? p->rd[j] : 0.0) - p->xz[j] / p->x[j];
+        if (p->kind[j] == COL_BOXED) r += (p->sw[j] - (full ? p->w[j] * p->ru[j] : 0.0)) / p->s[j];
         p->rhat[j] = r;
-        p->dx[j] = p->theta[j] * r;
+        d->x[j] = p->theta[j] * r;
     }
-    mul_A(p, p->dx, p->dy);
-    for (int i = 0; i < p->m; i++) p->dy[i] += p->rp[i];
-    if (msolve(p, p->dy)) return -1;
-    double da = gv != 0.0 ? (dot(p->g, p->dy, p->m) - ra) / gv : 0.0;
-    for (int i = 0; i < p->m; i++) p->dy[i] -= p->v[i] * da;
-    p->tmp[0] = da;
-    mul_At(p, p->dy, p->dx);
+    mul_A(p, d->x, d->y);
+    if (full)
+        for (int i = 0; i < m; i++) d->y[i] += p->rp[i];
+    if (msolve(p, d->y)) return -1;
+    d->a = gv != 0.0 ? (dot(p->g, d->y, m) - (full ? ra : 0.0)) / gv : 0.0;
+    for (int i = 0; i < m; i++) d->y[i] -= p->v[i] * d->a;
+    mul_At(p, d->y, d->x);
     for (int j = 0; j < n; j++) {
-        p->dx[j] = p->theta[j] * (p->dx[j] - p->rhat[j]);
-        p->dz[j] = (p->xz[j] - p->z[j] * p->dx[j]) / p->x[j];
+        d->x[j] = p->theta[j] * (d->x[j] - p->rhat[j]);
+        d->z[j] = (p->xz[j] - p->z[j] * d->x[j]) / p->x[j];
         if (p->kind[j] == COL_BOXED) {
-            p->ds[j] = p->ru[j] - p->dx[j];
-            p->dw[j] = (p->sw[j] - p->w[j] * p->ds[j]) / p->s[j];
+            d->s[j] = (full ? p->ru[j] : 0.0) - d->x[j];
+            d->w[j] = (p->sw[j] - p->w[j] * d->s[j]) / p->s[j];
         } else {
-            p->ds[j] = p->dw[j] = 0.0;
+            d->s[j] = d->w[j] = 0.0;
         }
     }
     return 0;
@@ -338,6 +350,7 @@ static int direction(ipm *p, double ra, double gv)
 static double max_step(const ipm *p, const double *v1, const double *d1, const double *v2,
                        const double *d2)
 {
+    /* over x (or z) and, on boxed columns, s (or w) */
     double t = 1.0;
     for (int j = 0; j < p->n; j++) {
         if (d1[j] < 0.0) t = fmin(t, -v1[j] / d1[j]);
@@ -346,21 +359,53 @@ static double max_step(const ipm *p, const double *v1, const double *d1, const d
     return t;
 }
 
-static void starting_point(ipm *p)
+/* Mehrotra's starting point: the least-norm solution of A x = b and a dual
+ * point y = -g / |g|^2 that satisfies the border's dual row, both shifted
+ * into the interior by amounts that balance x.z.  One factorization of
+ * A A^T.  Returns 0 or -1. */
+static int starting_point(ipm *p)
 {
-    int n = p->n;
+    int n = p->n, m = p->m;
+    double delta;
+    for (int j = 0; j < n; j++) p->theta[j] = 1.0;
+    if (factor(p, &delta)) return -1;
+    memcpy(p->tmp, p->b, (size_t)m * sizeof *p->tmp);
+    if (msolve(p, p->tmp)) return -1;
+    mul_At(p, p->tmp, p->x);
+    double gg = dot(p->g, p->g, m);
+    for (int i = 0; i < m; i++) p->y[i] = gg > 0.0 ? p->ca * p->g[i] / gg : 0.0;
+    mul_At(p, p->y, p->z);
+    double xmin = INFINITY, zmin = INFINITY;
     for (int j = 0; j < n; j++) {
+        p->z[j] = p->c[j] - p->z[j];
+        if (p->kind[j] == COL_BOXED) p->x[j] = fmin(fmax(p->x[j], 0.1 * p->U[j]), 0.9 * p->U[j]);
+        xmin = fmin(xmin, p->x[j]);
+        zmin = fmin(zmin, p->z[j]);
+    }
+    double dx = fmax(-1.5 * xmin, 0.0), dz = fmax(-1.5 * zmin, 0.0);
+    double xz = 0.0, sx = 0.0, sz = 0.0;
+    for (int j = 0; j < n; j++) {
+        xz += (p->x[j] + dx) * (p->z[j] + dz);
+        sx += p->x[j] + dx;
+        sz += p->z[j] + dz;
+    }
+    double hx = dx + (sz > 0.0 ? 0.5 * xz / sz : 1.0);
+    double hz = dz + (sx > 0.0 ? 0.5 * xz / sx : 1.0);
+    if (!(hx > 0.0)) hx = 1.0;
+    if (!(hz > 0.0)) hz = 1.0;
+    for (int j = 0; j < n; j++) {
+        p->z[j] += hz;
         if (p->kind[j] == COL_BOXED) {
-            p->x[j] = p->s[j] = 0.5 * p->U[j];
-            p->w[j] = 1.0;
+            p->x[j] = fmin(p->x[j] + hx, 0.9 * p->U[j]);
+            p->s[j] = p->U[j] - p->x[j];
+            p->w[j] = p->z[j];
         } else {
-            p->x[j] = 1.0;
+            p->x[j] += hx;
             p->s[j] = p->w[j] = 0.0;
         }
-        p->z[j] = 1.0;
     }
-    memset(p->y, 0, (size_t)p->m * sizeof *p->y);
     p->a = 0.0;
+    return 0;
 }
 
 static void answers(ipm *p)
@@ -384,10 +429,10 @@ static bl_lp_status solve(void *e)
     double unorm = 1.0;
     for (int j = 0; j < n; j++)
         if (p->kind[j] == COL_BOXED) unorm = fmax(unorm, 1.0 + p->U[j]);
-    starting_point(p);
     p->iterations = 0;
     bl_lp_status status = BL_LP_ITERATION_LIMIT;
-    for (int it = 0; it < p->set.max_iterations; it++) {
+    if (starting_point(p)) status = BL_LP_FAILED;
+    for (int it = 0; status == BL_LP_ITERATION_LIMIT && it < p->set.max_iterations; it++) {
         if (bl_interrupt_pending()) { status = BL_LP_INTERRUPTED; break; }
         if (p->set.max_seconds > 0 && bl_clock() - t0 > p->set.max_seconds) {
             status = BL_LP_TIME_LIMIT;
@@ -418,17 +463,35 @@ static bl_lp_status solve(void *e)
         double ep = inf_norm(p->rp, m) / bnorm, eu = inf_norm(p->ru, n) / unorm;
         double ed = fmax(inf_norm(p->rd, n), fabs(ra)) / cnorm;
         double eg = fabs(pobj - dobj) / (1.0 + fabs(pobj));
+        if (p->set.verbose)
+            fprintf(stderr, "ipm %3d  alpha %.10g  primal %.1e  dual %.1e  gap %.1e  mu %.1e\n",
+                    it, p->a, ep, ed, eg, mu);
         if (ep <= tol && eu <= tol && ed <= tol && eg <= tol) {
             status = BL_LP_OPTIMAL;
             break;
         }
-        /* divergence: a ray of the primal (unbounded) or of the dual
-         * (infeasible); see doc/theory.md for the certificates */
+        /* Divergence: an iterate growing without bound follows a ray.  A
+         * dual ray whose objective grows (b.y - U.w > 0 while A^T y stays
+         * feasible) certifies that no primal point exists; a primal ray
+         * along which alpha grows (A x + g a = 0, x >= 0) that the problem
+         * is unbounded.  Infeasibility is tested first: a model can have
+         * both rays, and then it has no equilibrium. */
         double xn = fmax(inf_norm(p->x, n), fabs(p->a)), yn = inf_norm(p->y, m);
-        if (xn > 1e10 && ed <= 1e-6) { status = BL_LP_UNBOUNDED; break; }
-        if (yn > 1e10 && ep <= 1e-6 * xn) { status = BL_LP_INFEASIBLE; break; }
-        if (xn > 1e12) { status = BL_LP_UNBOUNDED; break; }
-        if (yn > 1e12) { status = BL_LP_INFEASIBLE; break; }
+        if (xn > 1e8 || yn > 1e8) {
+            double rdn = fmax(inf_norm(p->rd, n), fabs(ra));
+            if (yn > 1e6 && dobj / yn > 1e-7 && rdn / yn < 1e-6) {
+                status = BL_LP_INFEASIBLE;
+                break;
+            }
+            if (xn > 1e6 && -pobj / xn > 1e-7 && inf_norm(p->rp, m) / xn < 1e-6) {
+                status = BL_LP_UNBOUNDED;
+                break;
+            }
+            if (xn > 1e14 || yn > 1e14) {
+                status = BL_LP_FAILED;
+                break;
+            }
+        }
 
         for (int j = 0; j < n; j++) {
             double d = p->z[j] / p->x[j];
@@ -441,45 +504,84 @@ static bl_lp_status solve(void *e)
         if (msolve(p, p->v)) { status = BL_LP_FAILED; break; }
         double gv = dot(p->g, p->v, m);
 
-        /* predictor */
+        /* predictor: the affine-scaling direction */
+        step *d = &p->dir;
         for (int j = 0; j < n; j++) {
             p->xz[j] = -p->x[j] * p->z[j];
             p->sw[j] = p->kind[j] == COL_BOXED ? -p->s[j] * p->w[j] : 0.0;
         }
-        if (direction(p, ra, gv)) { status = BL_LP_FAILED; break; }
-        double tp = max_step(p, p->x, p->dx, p->s, p->ds);
-        double td = max_step(p, p->z, p->dz, p->w, p->dw);
+        if (direction(p, d, 1, ra, gv)) { status = BL_LP_FAILED; break; }
+        double tp = max_step(p, p->x, d->x, p->s, d->s);
+        double td = max_step(p, p->z, d->z, p->w, d->w);
         double mu_aff = 0.0;
         for (int j = 0; j < n; j++) {
-            mu_aff += (p->x[j] + tp * p->dx[j]) * (p->z[j] + td * p->dz[j]);
+            mu_aff += (p->x[j] + tp * d->x[j]) * (p->z[j] + td * d->z[j]);
             if (p->kind[j] == COL_BOXED)
-                mu_aff += (p->s[j] + tp * p->ds[j]) * (p->w[j] + td * p->dw[j]);
+                mu_aff += (p->s[j] + tp * d->s[j]) * (p->w[j] + td * d->w[j]);
         }
         mu_aff /= (double)(n + nbox > 0 ? n + nbox : 1);
-        double sigma = pow(mu_aff / mu, 3.0);
-        if (sigma > 1.0) sigma = 1.0;
+        double sigma = fmin(pow(mu_aff / mu, 3.0), 1.0);
 
-        /* corrector: centring plus the second-order term of the predictor */
+        /* Mehrotra's corrector: centring plus the predictor's second-order term */
         for (int j = 0; j < n; j++) {
-            p->xz[j] = sigma * mu - p->x[j] * p->z[j] - p->dx[j] * p->dz[j];
+            p->xz[j] = sigma * mu - p->x[j] * p->z[j] - d->x[j] * d->z[j];
             p->sw[j] = p->kind[j] == COL_BOXED
-                           ? sigma * mu - p->s[j] * p->w[j] - p->ds[j] * p->dw[j]
+                           ? sigma * mu - p->s[j] * p->w[j] - d->s[j] * d->w[j]
                            : 0.0;
         }
-        if (direction(p, ra, gv)) { status = BL_LP_FAILED; break; }
-        double da = p->tmp[0];
-        tp = fmin(1.0, 0.99 * max_step(p, p->x, p->dx, p->s, p->ds));
-        td = fmin(1.0, 0.99 * max_step(p, p->z, p->dz, p->w, p->dw));
+        if (direction(p, d, 1, ra, gv)) { status = BL_LP_FAILED; break; }
+        tp = max_step(p, p->x, d->x, p->s, d->s);
+        td = max_step(p, p->z, d->z, p->w, d->w);
+
+        /* Gondzio's correctors: push the products of the trial point at a
+         * longer step back into [0.1, 10] sigma mu, keep the correction
+         * while it lengthens the step. */
+        for (int k = 0; k < 3 && fmin(tp, td) < 1.0; k++) {
+            double ttp = fmin(1.0, 1.5 * tp + 0.1), ttd = fmin(1.0, 1.5 * td + 0.1);
+            double lo = 0.1 * sigma * mu, hi = 10.0 * sigma * mu;
+            for (int j = 0; j < n; j++) {
+                double v = (p->x[j] + ttp * d->x[j]) * (p->z[j] + ttd * d->z[j]);
+                p->xz[j] = v < lo ? lo - v : v > hi ? fmax(hi - v, -hi) : 0.0;
+                p->sw[j] = 0.0;
+                if (p->kind[j] == COL_BOXED) {
+                    v = (p->s[j] + ttp * d->s[j]) * (p->w[j] + ttd * d->w[j]);
+                    p->sw[j] = v < lo ? lo - v : v > hi ? fmax(hi - v, -hi) : 0.0;
+                }
+            }
+            step *c = &p->cor;
+            if (direction(p, c, 0, 0.0, gv)) break;
+            for (int j = 0; j < n; j++) {
+                c->x[j] += d->x[j];
+                c->z[j] += d->z[j];
+                c->s[j] += d->s[j];
+                c->w[j] += d->w[j];
+            }
+            for (int i = 0; i < m; i++) c->y[i] += d->y[i];
+            c->a += d->a;
+            double np = max_step(p, p->x, c->x, p->s, c->s);
+            double nd = max_step(p, p->z, c->z, p->w, c->w);
+            if (fmin(np, nd) < fmin(tp, td) + 0.01) break;
+            step t = p->dir;
+            p->dir = *c;
+            p->cor = t;
+            d = &p->dir;
+            tp = np;
+            td = nd;
+        }
+
+        tp = fmin(1.0, 0.99 * tp);
+        td = fmin(1.0, 0.99 * td);
         for (int j = 0; j < n; j++) {
-            p->x[j] += tp * p->dx[j];
-            p->z[j] += td * p->dz[j];
+            p->x[j] += tp * d->x[j];
+            p->z[j] += td * d->z[j];
             if (p->kind[j] == COL_BOXED) {
-                p->s[j] += tp * p->ds[j];
-                p->w[j] += td * p->dw[j];
+                p->s[j] += tp * d->s[j];
+                p->w[j] += td * d->w[j];
             }
         }
-        p->a += tp * da;
-        for (int i = 0; i < m; i++) p->y[i] += td * p->dy[i];
+        if (p->set.verbose) fprintf(stderr, "      steps %.3f %.3f sigma %.2e\n", tp, td, sigma);
+        p->a += tp * d->a;
+        for (int i = 0; i < m; i++) p->y[i] += td * d->y[i];
         p->iterations = it + 1;
     }
     answers(p);

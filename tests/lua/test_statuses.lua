@@ -1,40 +1,43 @@
 -- Outcomes that are not errors (DESIGN.md 2.8), each on a model built to
--- produce it, with the multiplier's closed form where there is one.
+-- produce it, with the multiplier's closed form where there is one; the
+-- same from both LP engines.
 package.path = (arg[0]:match("(.*/)") or "./") .. "?.lua;" .. package.path
 local T = require "tap"
 
-local function base(x0, x1)
-  block { vertices = { { x0, -1 }, { x1, -1 }, { x1, 0 }, { x0, 0 } }, support = true }
+for _, lp in ipairs { "simplex", "ipm" } do
+  local function base(x0, x1)
+    block { vertices = { { x0, -1 }, { x1, -1 }, { x1, 0 }, { x0, 0 } }, support = true }
+  end
+
+  -- A leaning parallelogram whose centroid (x = 1.5) lies beyond its base
+  -- [0, 1]: it can stand only if the live load pulls it back, alpha < 0.
+  -- Rocking about (0, 0) with the centroid at height 1: alpha W 1 = -W 1.5.
+  model { mu = 0.65 }
+  block { vertices = { { 0, 0 }, { 1, 0 }, { 3, 2 }, { 2, 2 } } }
+  base(-1, 2)
+  local r = solve { lp = lp }
+  T.eq(r.status, "unstable", lp .. ": leaning block: status unstable")
+  T.near(r.alpha, -0.5, 1e-9, lp .. ": leaning block: alpha = -(1.5 - 1)/1")
+  T.ok(r.message:find("dead load", 1, true), lp .. ": leaning block: the sentence says why")
+
+  -- A live load pressing the block down can never make it collapse.
+  model { mu = 0.65 }
+  block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+  base(-1, 2)
+  load { live = "horizontal", direction = { 0, -1 } }
+  r = solve { lp = lp }
+  T.eq(r.status, "unbounded", lp .. ": downward live load: status unbounded")
+  T.ok(r.message:find("cannot produce a mechanism", 1, true), lp .. ": unbounded: the sentence says why")
+
+  -- A block held only at its side by a frictionless wall: nothing carries its
+  -- weight, whatever the horizontal multiplier.
+  model { mu = 0 }
+  block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+  block { vertices = { { 1, -1 }, { 2, -1 }, { 2, 2 }, { 1, 2 } }, support = true }
+  r = solve { lp = lp }
+  T.eq(r.status, "infeasible", lp .. ": frictionless side wall: status infeasible")
+  T.ok(r.message:find("no equilibrium", 1, true), lp .. ": infeasible: the sentence says why")
+  T.ok(not r.verified, lp .. ": infeasible: nothing claimed verified")
+  T.ok(tostring(r):find("infeasible", 1, true), lp .. ": infeasible: the printed result says so")
 end
-
--- A leaning parallelogram whose centroid (x = 1.5) lies beyond its base
--- [0, 1]: it can stand only if the live load pulls it back, alpha < 0.
--- Rocking about (0, 0) with the centroid at height 1: alpha W 1 = -W 1.5.
-model { mu = 0.65 }
-block { vertices = { { 0, 0 }, { 1, 0 }, { 3, 2 }, { 2, 2 } } }
-base(-1, 2)
-local r = solve {}
-T.eq(r.status, "unstable", "leaning block: status unstable")
-T.near(r.alpha, -0.5, 1e-9, "leaning block: alpha = -(1.5 - 1)/1")
-T.ok(r.message:find("dead load", 1, true), "leaning block: the sentence says why")
-
--- A live load pressing the block down can never make it collapse.
-model { mu = 0.65 }
-block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
-base(-1, 2)
-load { live = "horizontal", direction = { 0, -1 } }
-r = solve {}
-T.eq(r.status, "unbounded", "downward live load: status unbounded")
-T.ok(r.message:find("cannot produce a mechanism", 1, true), "unbounded: the sentence says why")
-
--- A block held only at its side by a frictionless wall: nothing carries its
--- weight, whatever the horizontal multiplier.
-model { mu = 0 }
-block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
-block { vertices = { { 1, -1 }, { 2, -1 }, { 2, 2 }, { 1, 2 } }, support = true }
-r = solve {}
-T.eq(r.status, "infeasible", "frictionless side wall: status infeasible")
-T.ok(r.message:find("no equilibrium", 1, true), "infeasible: the sentence says why")
-T.ok(not r.verified, "infeasible: nothing claimed verified")
-T.ok(tostring(r):find("infeasible", 1, true), "infeasible: the printed result says so")
 T.done()

@@ -2,8 +2,36 @@
 local E, U = { .5, 1, 1, 1, 1, .5 }, { 1, 1, 1, 1, 1 }
 local Wu, We = { 1, -1, 1, -1, 1 }, { .5, .5, -1, .5, .5, -1, .5, .5 }
 local E5, U5, Wu5, We5 = { .5, 1, 1, .5 }, { 1, 1, 1 }, { 1, -1, 1 }, { .5, .5, -1, .5, .5 }
-return {
+local walls = {
   W1 = { E, U, E, U, E, U },
   W4 = { E, U, E, Wu, We, Wu, We, Wu, E, U, E },
   W5 = { E5, U5, E5, Wu5, We5, Wu5, We5, Wu5, E5, U5, E5, Wu5, We5, Wu5, We5, Wu5, E5, U5, E5 },
 }
+
+-- A running-bond wall 8 units wide with two windows at random columns, each
+-- window three courses high with half blocks at its jambs (as in W4).
+function walls.random(seed)
+  math.randomseed(seed)
+  local windows = {}
+  windows[1], windows[2] = math.random(1, 2), math.random(4, 6)
+  local function row(half, open)
+    local cuts, seen = {}, {}
+    local function cut(x) if not seen[x] then seen[x] = true; cuts[#cuts + 1] = x end end
+    cut(0); cut(8)
+    for x = half and 0.5 or 1, 7.5, 1 do cut(x) end
+    if open then for _, j in ipairs(windows) do cut(j); cut(j + 1) end end
+    table.sort(cuts)
+    local r = {}
+    for i = 1, #cuts - 1 do
+      local a, b, gap = cuts[i], cuts[i + 1], false
+      for _, j in ipairs(windows) do gap = gap or (open and a >= j and b <= j + 1) end
+      r[#r + 1] = gap and -(b - a) or (b - a)
+    end
+    return r
+  end
+  local courses = {}
+  for c = 1, 9 do courses[c] = row(c % 2 == 1, c >= 4 and c <= 6) end
+  return courses
+end
+
+return walls
