@@ -13,7 +13,7 @@ void bl_solve_options_default(bl_solve_options *o)
     o->tolerance = 1e-7;
     o->verbose = 0;
     o->time_limit = 0;
-    o->lp = BL_LP_SIMPLEX;
+    o->lp = BL_LP_AUTO;
 }
 
 static bl_status from_lp(bl_lp_status st)
@@ -86,6 +86,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     s->status = from_lp(st);
     s->lp = bl_lp_engine(lp);
     s->iterations = bl_lp_iterations(lp);
+    s->factor_nnz = bl_lp_factor_nnz(lp);
     s->rows = sys->nrows;
     s->cols = sys->ncols;
     s->tolerance = o->tolerance;

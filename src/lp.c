@@ -10,9 +10,15 @@ struct bl_lp {
     void *impl;
 };
 
+bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows)
+{
+    if (asked != BL_LP_AUTO) return asked;
+    return nrows <= BL_LP_AUTO_ROWS ? BL_LP_SIMPLEX : BL_LP_IPM;
+}
+
 void bl_lp_settings_default(bl_lp_settings *s)
 {
-    s->engine = BL_LP_SIMPLEX;
+    s->engine = BL_LP_AUTO;
     s->verbose = 0;
     s->max_iterations = 0;
     s->max_seconds = 0;
@@ -26,7 +32,8 @@ bl_lp *bl_lp_create(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *e
         bl_error_set(err, "lp: out of memory");
         return NULL;
     }
-    lp->engine = s->engine == BL_LP_IPM ? &bl_lp_ipm_engine : &bl_lp_clp_engine;
+    lp->engine = bl_lp_choose(s->engine, p->nrows) == BL_LP_IPM ? &bl_lp_ipm_engine
+                                                                : &bl_lp_clp_engine;
     lp->impl = lp->engine->create(p, s, err);
     if (!lp->impl) {
         free(lp);
@@ -51,4 +58,5 @@ bl_lp_status bl_lp_solve(bl_lp *lp) { return lp->engine->solve(lp->impl); }
 const double *bl_lp_primal(const bl_lp *lp) { return lp->engine->primal(lp->impl); }
 const double *bl_lp_dual(const bl_lp *lp) { return lp->engine->dual(lp->impl); }
 int bl_lp_iterations(const bl_lp *lp) { return lp->engine->iterations(lp->impl); }
+double bl_lp_factor_nnz(const bl_lp *lp) { return lp->engine->factor_nnz(lp->impl); }
 const char *bl_lp_engine(const bl_lp *lp) { return lp->engine->name; }

@@ -20,9 +20,16 @@ typedef struct bl_lp_problem {
 } bl_lp_problem;
 
 typedef enum bl_lp_engine_kind {
+    BL_LP_AUTO,          /* chosen by bl_lp_choose from the size */
     BL_LP_SIMPLEX,       /* CLP: primal simplex cold, dual simplex warm */
     BL_LP_IPM            /* interior point on CHOLMOD (lp_ipm.c) */
 } bl_lp_engine_kind;
+
+/* The engine "auto" means for an LP of nrows equality rows: the simplex up
+ * to BL_LP_AUTO_ROWS rows (its answer is a vertex: one clean mechanism),
+ * the interior point above (doc/performance.md has the measurements). */
+#define BL_LP_AUTO_ROWS 600
+bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows);
 
 typedef struct bl_lp_settings {
     bl_lp_engine_kind engine;
@@ -64,6 +71,8 @@ bl_lp_status bl_lp_solve(bl_lp *lp);
 const double *bl_lp_primal(const bl_lp *lp);
 const double *bl_lp_dual(const bl_lp *lp);
 int bl_lp_iterations(const bl_lp *lp);
+/* Non-zeros of the interior point's Cholesky factor (0 for the simplex). */
+double bl_lp_factor_nnz(const bl_lp *lp);
 /* Name of the engine ("simplex", "ipm"). */
 const char *bl_lp_engine(const bl_lp *lp);
 

@@ -143,7 +143,8 @@ static bl_lp_status solve(void *e)
 static const double *primal(const void *e) { return static_cast<const clp_lp *>(e)->x.data(); }
 static const double *dual(const void *e) { return static_cast<const clp_lp *>(e)->y.data(); }
 static int iterations(const void *e) { return static_cast<const clp_lp *>(e)->iterations; }
+static double factor_nnz(const void *) { return 0.0; }
 
 extern "C" const bl_lp_backend bl_lp_clp_engine = {
-    "simplex", create, destroy, set_bounds, solve, primal, dual, iterations,
+    "simplex", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz,
 };

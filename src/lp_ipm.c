@@ -55,6 +55,7 @@ typedef struct ipm {
     step dir, cor;      /* the direction and a centrality corrector */
     double *xu, *yu;    /* answers in user terms */
     int iterations;
+    int warm;           /* xu, yu hold the last optimal answer */
 } ipm;
 
 static void *xcalloc(size_t n, size_t size) { return calloc(n ? n : 1, size); }
@@ -408,6 +409,34 @@ static int starting_point(ipm *p)
     return 0;
 }
 
+/* A warm start from the last answer (xu, yu), mapped onto the current
+ * internal columns: the primal and dual values pushed at least a small
+ * distance into the interior, so that the path can bend to the changed
+ * bounds (DESIGN 3.1: 0.01 saved 22 % of the iterations at 10,000 blocks). */
+static void warm_point(ipm *p)
+{
+    const double push = 0.01;
+    int n = p->n, m = p->m;
+    for (int i = 0; i < m; i++) p->y[i] = -p->yu[i];
+    mul_At(p, p->y, p->z);
+    for (int k = 0; k < n; k++) {
+        int j = p->map[k];
+        double v = p->sign[k] * (p->xu[j] - p->shift[j]); /* a split free column: x+ or x- */
+        double zj = p->c[k] - p->z[k];
+        p->x[k] = fmax(v, push);
+        p->z[k] = fmax(zj, push);
+        if (p->kind[k] == COL_BOXED) {
+            p->x[k] = fmin(p->x[k], p->U[k] - fmin(push, 0.5 * p->U[k]));
+            if (p->x[k] <= 0.0) p->x[k] = 0.5 * p->U[k];
+            p->s[k] = p->U[k] - p->x[k];
+            p->w[k] = fmax(-zj, push);
+        } else {
+            p->s[k] = p->w[k] = 0.0;
+        }
+    }
+    p->a = p->border >= 0 ? p->xu[p->border] : 0.0;
+}
+
 static void answers(ipm *p)
 {
     for (int j = 0; j < p->nu; j++) p->xu[j] = p->shift[j];
@@ -431,7 +460,8 @@ static bl_lp_status solve(void *e)
         if (p->kind[j] == COL_BOXED) unorm = fmax(unorm, 1.0 + p->U[j]);
     p->iterations = 0;
     bl_lp_status status = BL_LP_ITERATION_LIMIT;
-    if (starting_point(p)) status = BL_LP_FAILED;
+    if (p->warm) warm_point(p);
+    else if (starting_point(p)) status = BL_LP_FAILED;
     for (int it = 0; status == BL_LP_ITERATION_LIMIT && it < p->set.max_iterations; it++) {
         if (bl_interrupt_pending()) { status = BL_LP_INTERRUPTED; break; }
         if (p->set.max_seconds > 0 && bl_clock() - t0 > p->set.max_seconds) {
@@ -585,6 +615,7 @@ static bl_lp_status solve(void *e)
         p->iterations = it + 1;
     }
     answers(p);
+    p->warm = status == BL_LP_OPTIMAL;
     return status;
 }
 
@@ -592,6 +623,12 @@ static const double *primal(const void *e) { return ((const ipm *)e)->xu; }
 static const double *dual(const void *e) { return ((const ipm *)e)->yu; }
 static int iterations(const void *e) { return ((const ipm *)e)->iterations; }
 
+static double factor_nnz(const void *e)
+{
+    const ipm *p = e;
+    return p->L ? p->cm.lnz : 0.0;
+}
+
 const bl_lp_backend bl_lp_ipm_engine = {
-    "ipm", create, destroy, set_bounds, solve, primal, dual, iterations,
+    "ipm", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz,
 };

@@ -504,6 +504,8 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     lua_setfield(L, -2, "rows");
     lua_pushinteger(L, s->cols);
     lua_setfield(L, -2, "columns");
+    lua_pushnumber(L, s->factor_nnz);
+    lua_setfield(L, -2, "factor_nnz");
     lua_setfield(L, -2, "size");
 
     lua_createtable(L, 0, 5);
@@ -584,7 +586,7 @@ static int model_solve(lua_State *L)
                                          "verbose", NULL};
     static const char *const flows[] = {"associative", NULL};
     static const char *const methods[] = {"assoc", NULL};
-    static const char *const lps[] = {"simplex", "ipm", NULL};
+    static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
     bl_model *m = check_model(L, 1);
     if (lua_isnoneornil(L, 2)) lua_newtable(L), lua_replace(L, 2);
     check_fields(L, 2, "solve", fields, 0);
@@ -595,7 +597,7 @@ static int model_solve(lua_State *L)
     bl_solve_options_default(&o);
     o.tolerance = number_field(L, 2, "solve", "tolerance", o.tolerance, POSITIVE);
     o.verbose = boolean_field(L, 2, "solve", "verbose", 0);
-    o.lp = lp == 1 ? BL_LP_IPM : BL_LP_SIMPLEX;
+    o.lp = lp == 0 ? BL_LP_AUTO : lp == 1 ? BL_LP_SIMPLEX : BL_LP_IPM;
     o.time_limit = number_field(L, 2, "solve", "time_limit", 0, POSITIVE);
 
     bl_solution **box = lua_newuserdatauv(L, sizeof *box, 0);

@@ -64,6 +64,7 @@ typedef struct bl_solution {
     bl_timings time;
     int iterations;          /* LP engine iterations */
     int rows, cols;          /* size of the LP */
+    double factor_nnz;       /* interior point: non-zeros of the Cholesky factor */
     const char *lp;          /* engine name, static */
 } bl_solution;
 

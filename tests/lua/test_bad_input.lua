@@ -50,6 +50,8 @@ local bad = {
   { "contacts", function() contacts { tol = -1 } end, "contacts", "'tol'" },
   { "solve", function() solve { flow = "magic" } end, "solve", "'flow'", "associative" },
   { "solve", function() solve { tolerance = 0 } end, "solve", "'tolerance'" },
+  { "solve", function() solve { lp = "fast" } end, "solve", "'lp'", "\"auto\", \"simplex\", \"ipm\"" },
+  { "solve", function() solve { time_limit = -1 } end, "solve", "'time_limit'" },
   { "solve", function() solve { iterations = 3 } end, "solve", "unknown field 'iterations'" },
   { "wall", function() wall { courses = { { 1, "a" } } } end, "wall", "'courses'" },
   { "wall", function() wall { courses = { { 1 } }, unit = { 0.4 } } end, "wall", "'unit'" },

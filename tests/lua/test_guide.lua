@@ -5,7 +5,10 @@
 package.path = (arg[0]:match("(.*/)") or "./") .. "?.lua;" .. package.path
 local T = require "tap"
 
-local root = arg[0]:match("^(.-)tests/lua/[^/]*$") or ""
+-- The project root: arg[0] is ".../tests/lua/test_guide.lua", or a path
+-- relative to some other directory; then go up from the test's own one.
+local root = arg[0]:match("^(.-)tests/lua/[^/]*$") or
+             ((arg[0]:match("(.*/)") or "./") .. "../../")
 local path = root .. "doc/guide.md"
 local f, why = io.open(path, "r")
 T.ok(f ~= nil, "doc/guide.md can be read", why)

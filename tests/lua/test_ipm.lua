@@ -48,4 +48,18 @@ for _, case in ipairs { { 0.3, 0.65 }, { 1.5, 0.4 }, { 0.8, 0.8 } } do
   T.near(r.alpha, math.min(mu, ratio), 1e-7, ("block b/h = %g, mu = %g: ipm alpha = min(mu, b/h)")
          :format(ratio, mu))
 end
+-- lp = "auto" (the default): the simplex up to 600 rows, the interior point
+-- above (doc/performance.md).
+model { mu = 0.65 }
+wall { courses = walls.W4, unit = { 0.4, 0.175 } }
+local r = solve {}
+T.eq(r.lp, "simplex", ("auto on %d rows: simplex"):format(r.size.rows))
+model { mu = 0.65 }
+local big = {}
+for c = 1, 16 do big[c] = c % 2 == 1 and { .5, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, .5 }
+                             or { 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1 } end
+wall { courses = big, unit = { 0.4, 0.175 } }
+r = solve {}
+T.eq(r.lp, "ipm", ("auto on %d rows: interior point"):format(r.size.rows))
+T.ok(r.size.factor_nnz > r.size.rows, "the interior point reports its factor's non-zeros")
 T.done()
