@@ -40,7 +40,7 @@ return function(core)
   -- load{...} is the DSL's; load("chunk") and load(fn) stay Lua's own.
   local lua_load, dsl_load = load, M.load
   function M.load(t, ...)
-    if type(t) == "table" then return dsl_load(t) end
+    if type(t) == "table" or t == nil then return dsl_load(t) end
     return lua_load(t, ...)
   end
 

@@ -177,6 +177,12 @@ bl_system *bl_system_build(const bl_model *m, bl_error *err)
         }
     s->colptr[c + 1] = nz;
     free(fL);
+    if (nz == s->colptr[c]) {
+        bl_system_free(s);
+        bl_error_set(err, "solve: the model has no live load; set one with "
+                          "load{ live = \"horizontal\" } or a live point load");
+        return NULL;
+    }
     return s;
 oom:
     bl_system_free(s);

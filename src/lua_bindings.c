@@ -12,6 +12,7 @@
 #include <lauxlib.h>
 #include <lualib.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -41,11 +42,21 @@ static int fail(lua_State *L, const char *fmt, ...)
     return lua_error(L);
 }
 
+/* An omitted table argument at idx (the last one) reads as {}. */
+static void opt_table(lua_State *L, int idx)
+{
+    if (lua_isnoneornil(L, idx)) {
+        lua_settop(L, idx - 1);
+        lua_newtable(L);
+    }
+}
+
 /* Raises an error for the first key of table idx that is neither one of the
  * names in allowed (NULL-terminated) nor a positional index 1..npos. */
 static void check_fields(lua_State *L, int idx, const char *fn, const char *const *allowed, int npos)
 {
-    luaL_checktype(L, idx, LUA_TTABLE);
+    if (!lua_istable(L, idx))
+        fail(L, "%s: expects a table of named fields, got %s", fn, luaL_typename(L, idx));
     lua_pushnil(L);
     while (lua_next(L, idx)) {
         lua_pop(L, 1);
@@ -230,8 +241,10 @@ static int model_tostring(lua_State *L)
 {
     bl_model *m = check_model(L, 1);
     int nfree = bl_model_free_blocks(m);
-    lua_pushfstring(L, "model%s%s: %d free blocks, %d supports, mu = %f", m->name[0] ? " " : "",
-                    m->name, nfree, m->nblocks - nfree, m->mu);
+    char mu[32];
+    snprintf(mu, sizeof mu, "%g", m->mu);
+    lua_pushfstring(L, "model%s%s: %d free blocks, %d support%s, mu = %s", m->name[0] ? " " : "",
+                    m->name, nfree, m->nblocks - nfree, m->nblocks - nfree == 1 ? "" : "s", mu);
     if (m->contacts_valid) lua_pushfstring(L, ", %d interfaces", m->ninterfaces);
     else lua_pushstring(L, "");
     lua_concat(L, 2);
@@ -263,7 +276,7 @@ static int model_block(lua_State *L)
     double th = number_field(L, 2, "block", "thickness", 0.0, POSITIVE);
     bl_error err;
     if (bl_model_add_block(m, v, nv, support, rho, th, &err))
-        return fail(L, "block: %s", err.msg);
+        return fail(L, "%s", err.msg); /* "block N: ..." */
     lua_pushinteger(L, m->nblocks);
     return 1;
 }
@@ -272,7 +285,7 @@ static int model_contacts(lua_State *L)
 {
     static const char *const fields[] = {"tol", "gap", NULL};
     bl_model *m = check_model(L, 1);
-    if (lua_isnoneornil(L, 2)) lua_newtable(L), lua_replace(L, 2);
+    opt_table(L, 2);
     check_fields(L, 2, "contacts", fields, 0);
     double tol = number_field(L, 2, "contacts", "tol", m->contact_tol, NONNEG);
     double gap = number_field(L, 2, "contacts", "gap", m->contact_gap, NONNEG);
@@ -280,10 +293,16 @@ static int model_contacts(lua_State *L)
         lua_pop(L, 1);
         if (gap == 0) gap = -1; /* an explicit 0 switches the near-miss check off */
     }
+    double old_tol = m->contact_tol, old_gap = m->contact_gap;
     m->contact_tol = tol;
     m->contact_gap = gap;
     bl_error err;
-    if (bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
+    if (bl_contact_detect(m, &err)) {
+        m->contact_tol = old_tol;
+        m->contact_gap = old_gap;
+        if (old_tol != tol || old_gap != gap) bl_contact_detect(m, NULL);
+        return fail(L, "%s", err.msg);
+    }
     lua_pushinteger(L, m->ninterfaces);
     return 1;
 }
@@ -321,6 +340,17 @@ static int model_interface(lua_State *L)
     if (!s.npoints && !s.has_mu && !s.has_cohesion)
         return fail(L, "interface: give 'mu', 'cohesion' or 'points'");
     bl_error err;
+    if (!s.npoints) { /* an override needs an interface to act on: check now */
+        if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
+        int found = 0;
+        for (int k = 0; k < m->ninterfaces && !found; k++) {
+            const bl_interface *in = &m->interfaces[k];
+            found = (in->a == s.a && in->b == s.b) || (in->a == s.b && in->b == s.a);
+        }
+        if (!found)
+            return fail(L, "interface: blocks %d and %d share no interface to change; "
+                           "give points = {{x1, y1}, {x2, y2}} to declare one", s.a + 1, s.b + 1);
+    }
     if (bl_model_add_joint(m, &s, &err)) return fail(L, "%s", err.msg);
     return 0;
 }
@@ -353,6 +383,11 @@ static int model_load(lua_State *L)
                 fail(L, "%s: field 'at' is missing (the point {x, y} where it acts)", fn);
             if (!point_field(L, t, fn, "force", &pl[k].force))
                 fail(L, "%s: field 'force' is missing ({fx, fy})", fn);
+            const bl_block *bk = &m->blocks[pl[k].block];
+            double tol = 1e-9 * hypot(bk->box[2] - bk->box[0], bk->box[3] - bk->box[1]);
+            if (bl_polygon_depth(bk->v, bk->nv, pl[k].at) < -tol)
+                fail(L, "%s: field 'at' (%g, %g) is outside block %d", fn, pl[k].at.x, pl[k].at.y,
+                     pl[k].block + 1);
             pl[k].live = k;
             kinds[k] = 2;
             lua_pop(L, 1);
@@ -580,6 +615,17 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     lua_setfield(L, -2, "states");
 }
 
+/* Ctrl-C during a solve: the core polls the flag; the handler that was in
+ * place (the prompt's, or lua.c's under a stock interpreter) runs too. */
+static struct sigaction previous_sigint;
+
+static void on_sigint(int sig)
+{
+    bl_interrupt_request();
+    if (previous_sigint.sa_handler != SIG_DFL && previous_sigint.sa_handler != SIG_IGN)
+        previous_sigint.sa_handler(sig);
+}
+
 static int model_solve(lua_State *L)
 {
     static const char *const fields[] = {"flow", "method", "lp", "tolerance", "time_limit",
@@ -588,7 +634,7 @@ static int model_solve(lua_State *L)
     static const char *const methods[] = {"assoc", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
     bl_model *m = check_model(L, 1);
-    if (lua_isnoneornil(L, 2)) lua_newtable(L), lua_replace(L, 2);
+    opt_table(L, 2);
     check_fields(L, 2, "solve", fields, 0);
     choice_field(L, 2, "solve", "flow", flows, 0);
     choice_field(L, 2, "solve", "method", methods, 0);
@@ -605,7 +651,17 @@ static int model_solve(lua_State *L)
     luaL_setmetatable(L, SOLUTION_MT);
     int sidx = lua_gettop(L);
     bl_error err;
-    if (bl_assoc_solve(m, &o, box, &err)) return fail(L, "%s", err.msg);
+    struct sigaction sa, old;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_sigint;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old);
+    previous_sigint = old;
+    int rc = bl_assoc_solve(m, &o, box, &err);
+    sigaction(SIGINT, &old, NULL);
+    if (rc) return fail(L, "%s", err.msg);
+    if ((*box)->status == BL_INTERRUPTED)
+        return fail(L, "solve: interrupted (Ctrl-C); the model is as it was");
     push_result(L, *box, sidx);
     return 1;
 }

@@ -437,6 +437,17 @@ static char **complete(const char *text, int start, int end)
 
 /* ---- the REPL ---------------------------------------------------------- */
 
+/* Ctrl-C while a line is being typed abandons that line and shows a fresh
+ * prompt, as shells do; it does not end the session. */
+static void on_idle_sigint(int sig)
+{
+    (void)sig;
+    (void)!write(STDOUT_FILENO, "\n", 1);
+    rl_on_new_line();
+    rl_replace_line("", 0);
+    rl_redisplay();
+}
+
 /* Returns the next input line without its newline (malloc'd), or NULL at
  * end of input. */
 static char *read_line(int interactive, int first)
@@ -445,8 +456,16 @@ static char *read_line(int interactive, int first)
     size_t cap = 0;
     ssize_t len;
 
-    if (interactive)
-        return readline(first ? PROMPT : PROMPT_MORE);
+    if (interactive) {
+        struct sigaction sa, old;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_idle_sigint;
+        sigemptyset(&sa.sa_mask);
+        sigaction(SIGINT, &sa, &old);
+        line = readline(first ? PROMPT : PROMPT_MORE);
+        sigaction(SIGINT, &old, NULL);
+        return line;
+    }
     len = getline(&line, &cap, stdin);
     if (len < 0) {
         free(line);

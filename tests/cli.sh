@@ -67,12 +67,15 @@ LUA
   sleep 1.5
   tmux send-keys -t "$s" C-c
   sleep 1.5
+  tmux send-keys -t "$s" 'half typed line' C-c
+  sleep 0.5
   tmux send-keys -t "$s" 'print("blocks", stats().blocks)' Enter
   sleep 1
   screen=$(tmux capture-pane -p -t "$s")
   tmux kill-session -t "$s" 2>/dev/null
   check "Ctrl-C stops a solve and returns to the prompt" grep -q interrupted <<<"$screen"
-  check "the model is intact after Ctrl-C" grep -qE 'blocks[[:space:]]+3630' <<<"$screen"
+  check "the model is intact after Ctrl-C, and Ctrl-C on a typed line keeps the session" \
+    grep -qE 'blocks[[:space:]]+3630' <<<"$screen"
 else
   echo "ok $((n + 1)) - Ctrl-C test # SKIP tmux not installed"; n=$((n + 1))
 fi

@@ -7,10 +7,11 @@ local T = require "tap"
 local m = model { mu = 0.5 }
 block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
 block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+block { vertices = { { 5, -1 }, { 6, -1 }, { 6, 0 }, { 5, 0 } }, support = true }
 local before = solve {}.alpha
 local function same(label)
   local st = m:stats()
-  T.ok(st.blocks == 1 and st.supports == 1 and st.interfaces == 1 and
+  T.ok(st.blocks == 1 and st.supports == 2 and st.interfaces == 1 and
        solve {}.alpha == before, label .. ": model unchanged")
 end
 
@@ -41,11 +42,17 @@ local bad = {
   { "interface", function() interface { 1, 9, mu = 0.1 } end, "interface", "entry 2" },
   { "interface", function() interface { 1, 2, muu = 0.1 } end, "interface", "unknown field 'muu'" },
   { "interface", function() interface { 1, 2 } end, "interface", "'mu'" },
+  { "interface", function() interface { 1, 3, mu = 0.2 } end, "interface",
+    "blocks 1 and 3 share no interface" },
   { "load", function() load { live = "sideways" } end, "load", "'live'", "horizontal" },
   { "load", function() load { live = { block = 1, at = { 0, 0 } } } end, "load live", "'force'" },
   { "load", function() load { live = { block = 2, at = { 0, 0 }, force = { 1, 0 } } } end,
     "load live", "support" },
   { "load", function() load { tilt = "steep" } end, "load", "'tilt'" },
+  { "load", function() load { live = { block = 1, at = { 5, 5 }, force = { 1, 0 } } } end,
+    "load live", "'at'", "outside block 1" },
+  { "load", function() load() end, "load", "expects a table" },
+  { "solve", function() load { live = "none" }; solve {} end, "solve", "no live load" },
   { "load", function() load { direction = { 0, 0 }, live = "horizontal" } end, "load", "'direction'" },
   { "contacts", function() contacts { tol = -1 } end, "contacts", "'tol'" },
   { "solve", function() solve { flow = "magic" } end, "solve", "'flow'", "associative" },
@@ -62,7 +69,10 @@ local bad = {
 }
 for i, case in ipairs(bad) do
   T.raises(case[2], ("%s rejects bad input %d"):format(case[1], i), table.unpack(case, 3))
+  load { live = "horizontal" } -- undo the one case that clears the live load first
   if case[1] ~= "model" then same(("%s case %d"):format(case[1], i)) end
 end
 T.ok(current() == m, "a rejected model{} does not replace the current model")
+T.eq(m:contacts(), 1, "m:contacts() without a table")
+T.eq(m:solve().alpha, before, "m:solve() without a table")
 T.done()
