@@ -1,8 +1,9 @@
--- bench.lua N [TIME_LIMIT]: one benchmark run, a running-bond wall of N full
+-- bench.lua ENGINE N [TIME_LIMIT]: one benchmark run with the LP engine
+-- ENGINE ("ipm", "simplex" or "auto"), a running-bond wall of N full
 -- blocks per course and N courses, the half-block course first (N = 32, 50,
 -- 100 give 1,040, 2,525 and 10,050 blocks), mu = 0.65, horizontal load
 -- proportional to weight.  Prints one line of key=value pairs.
-local n, limit = tonumber(arg[1]), tonumber(arg[2])
+local engine, n, limit = arg[1], tonumber(arg[2]), tonumber(arg[3])
 local clock = blocklim.clock
 local t0 = clock()
 model { mu = 0.65 }
@@ -14,11 +15,12 @@ local courses = {}
 for c = 1, n do courses[c] = c % 2 == 1 and E or U end
 wall { courses = courses, unit = { 0.4, 0.175 } }
 local t1 = clock()
-local r = solve { time_limit = limit }
+local r = solve { lp = engine, time_limit = limit }
 local t = r.timings
-print(("n=%d blocks=%d interfaces=%d rows=%d columns=%d lp=%s iterations=%d status=%s "
+print(("n=%d blocks=%d interfaces=%d rows=%d columns=%d lp=%s iterations=%d factor_nnz=%.0f status=%s "
   .. "alpha=%.8g verified=%s generate=%.3f detection=%.3f assembly=%.3f solve=%.3f "
   .. "verification=%.3f total=%.3f")
   :format(n, r.size.blocks, r.size.interfaces, r.size.rows, r.size.columns, r.lp, r.iterations,
+          r.size.factor_nnz,
           r.status:gsub(" ", "_"), r.alpha, tostring(r.verified), t1 - t0, t.detection,
           t.assembly, t.solve, t.verification, t1 - t0 + t.total))

@@ -14,6 +14,7 @@ void bl_solve_options_default(bl_solve_options *o)
     o->verbose = 0;
     o->time_limit = 0;
     o->lp = BL_LP_AUTO;
+    o->mps = NULL;
 }
 
 static bl_status from_lp(bl_lp_status st)
@@ -73,7 +74,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     ls.engine = o->lp;
     bl_lp_problem p = {sys->nrows, sys->ncols, sys->colptr, sys->rowind, sys->val,
                        sys->lo,    sys->hi,    sys->rhs,    sys->obj};
-    bl_lp *lp = bl_lp_create(&p, &ls, err);
+    bl_lp *lp = o->mps && bl_lp_write_mps(&p, o->mps, err) ? NULL : bl_lp_create(&p, &ls, err);
     if (!lp) {
         bl_system_free(sys);
         bl_solution_free(s);

@@ -15,6 +15,7 @@ typedef struct bl_solve_options {
     int verbose;        /* let the LP engine print */
     double time_limit;  /* seconds for the LP, 0: none */
     bl_lp_engine_kind lp;
+    const char *mps;    /* write the LP to this MPS file first, or NULL */
 } bl_solve_options;
 
 void bl_solve_options_default(bl_solve_options *o);

@@ -73,6 +73,10 @@ const double *bl_lp_dual(const bl_lp *lp);
 int bl_lp_iterations(const bl_lp *lp);
 /* Non-zeros of the interior point's Cholesky factor (0 for the simplex). */
 double bl_lp_factor_nnz(const bl_lp *lp);
+/* Writes p to file in MPS format, as the minimization of -obj (free MPS
+ * has no objective sense), with full precision.  0 or -1 with err. */
+int bl_lp_write_mps(const bl_lp_problem *p, const char *file, bl_error *err);
+
 /* Name of the engine ("simplex", "ipm"). */
 const char *bl_lp_engine(const bl_lp *lp);
 

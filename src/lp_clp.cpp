@@ -145,6 +145,28 @@ static const double *dual(const void *e) { return static_cast<const clp_lp *>(e)
 static int iterations(const void *e) { return static_cast<const clp_lp *>(e)->iterations; }
 static double factor_nnz(const void *) { return 0.0; }
 
+extern "C" int bl_lp_write_mps(const bl_lp_problem *p, const char *file, bl_error *err)
+{
+    try {
+        ClpSimplex model;
+        std::vector<double> lo(p->ncols), hi(p->ncols), obj(p->ncols);
+        for (int j = 0; j < p->ncols; j++) {
+            lo[j] = clp_bound(p->lo[j]);
+            hi[j] = clp_bound(p->hi[j]);
+            obj[j] = -p->obj[j];
+        }
+        std::vector<CoinBigIndex> start(p->colptr, p->colptr + p->ncols + 1);
+        model.loadProblem(p->ncols, p->nrows, start.data(), p->rowind, p->val, lo.data(),
+                          hi.data(), obj.data(), p->rhs, p->rhs);
+        model.messageHandler()->setLogLevel(0);
+        if (model.writeMps(file, 1) != 0)
+            return bl_error_set(err, "solve: cannot write the MPS file '%s'", file);
+    } catch (...) {
+        return bl_error_set(err, "solve: cannot write the MPS file '%s'", file);
+    }
+    return 0;
+}
+
 extern "C" const bl_lp_backend bl_lp_clp_engine = {
     "simplex", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz,
 };

@@ -629,7 +629,7 @@ static void on_sigint(int sig)
 static int model_solve(lua_State *L)
 {
     static const char *const fields[] = {"flow", "method", "lp", "tolerance", "time_limit",
-                                         "verbose", NULL};
+                                         "verbose", "mps", NULL};
     static const char *const flows[] = {"associative", NULL};
     static const char *const methods[] = {"assoc", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
@@ -644,6 +644,11 @@ static int model_solve(lua_State *L)
     o.tolerance = number_field(L, 2, "solve", "tolerance", o.tolerance, POSITIVE);
     o.verbose = boolean_field(L, 2, "solve", "verbose", 0);
     o.lp = lp == 0 ? BL_LP_AUTO : lp == 1 ? BL_LP_SIMPLEX : BL_LP_IPM;
+    if (field(L, 2, "mps")) {
+        if (lua_type(L, -1) != LUA_TSTRING)
+            fail(L, "solve: field 'mps' must be a file name, got %s", luaL_typename(L, -1));
+        o.mps = lua_tostring(L, -1); /* stays on the stack during the solve */
+    }
     o.time_limit = number_field(L, 2, "solve", "time_limit", 0, POSITIVE);
 
     bl_solution **box = lua_newuserdatauv(L, sizeof *box, 0);

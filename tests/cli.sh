@@ -46,6 +46,24 @@ LUA_CPATH="$build/?.so" "$lua" -e '
   print(r.status)' > "$tmp/mod" 2>&1
 check "require \"blocklim\" from a stock lua5.4 solves a block" grep -qx optimal "$tmp/mod"
 
+# solve{ mps = ... } writes the LP; GLPK, an independent solver, must find
+# the same optimum (-alpha: the file minimizes -alpha) to 1e-8 relative.
+if command -v glpsol >/dev/null; then
+  for w in w4 w5; do
+    alpha=$("$bin" -e "
+      local print0 = print; print = function() end; arg = { [0] = '', '$tmp/$w.png' }
+      dofile('$(dirname "$0")/../models/$w.lua')
+      print = print0
+      print(string.format('%.12g', solve { mps = '$tmp/$w.mps' }.alpha))" 2>/dev/null)
+    glpsol --freemps "$tmp/$w.mps" --min -o "$tmp/$w.sol" >/dev/null 2>&1
+    obj=$(sed -n 's/^Objective: *OBJROW = \([-0-9.e+]*\).*/\1/p' "$tmp/$w.sol")
+    check "$w: the MPS file solved by GLPK gives alpha ($alpha vs ${obj#-})" \
+      awk -v a="$alpha" -v o="$obj" 'BEGIN { d = a + o; if (d < 0) d = -d; exit !(a > 0 && d <= 1e-8 * a) }'
+  done
+else
+  echo "ok $((n + 1)) - MPS check # SKIP glpsol not installed"; n=$((n + 1))
+fi
+
 # Ctrl-C during a long solve: the prompt comes back and the model is intact.
 if command -v tmux >/dev/null; then
   cat > "$tmp/big.lua" <<'LUA'
