@@ -14,6 +14,8 @@
  *     by CHOLMOD (supernodal, METIS ordering): analysed once, refactored
  *     numerically every iteration.
  */
+#define _GNU_SOURCE /* RTLD_DEFAULT */
+#include <dlfcn.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -51,7 +53,7 @@ typedef struct ipm {
     double *aval;       /* values of A, in F's pattern */
     /* iterates and work */
     double *x, *z, *s, *w, *y, a;
-    double *theta, *rd, *rp, *ru, *rhat, *xz, *sw, *v, *tmp;
+    double *theta, *rd, *rp, *ru, *rhat, *xz, *sw, *v, *tmp, *ntmp;
     step dir, cor;      /* the direction and a centrality corrector */
     double *xu, *yu;    /* answers in user terms */
     int iterations;
@@ -72,7 +74,7 @@ static void destroy(void *e)
                     &p->s,    &p->w,     &p->y,  &p->theta, &p->rd,  &p->rp,  &p->ru,
                     &p->rhat, &p->xz,    &p->sw, &p->v,    &p->tmp,  &p->xu,  &p->yu,
                     &p->dir.x,  &p->dir.z,   &p->dir.s, &p->dir.w, &p->dir.y,  &p->cor.x, &p->cor.z,
-                    &p->cor.s,  &p->cor.w,   &p->cor.y};
+                    &p->cor.s,  &p->cor.w,   &p->cor.y, &p->ntmp};
     for (size_t i = 0; i < sizeof d / sizeof *d; i++) free(*d[i]);
     free(p->ucp);
     free(p->uri);
@@ -153,7 +155,7 @@ static int build(ipm *p, bl_error *err)
     size_t nn = (size_t)n;
     double **arr[] = {&p->x,   &p->z,   &p->s,   &p->w,   &p->theta, &p->rd,  &p->rhat,
                       &p->xz,  &p->sw,  &p->ru,  &p->dir.x, &p->dir.z,   &p->dir.s, &p->dir.w,
-                      &p->cor.x, &p->cor.z, &p->cor.s, &p->cor.w};
+                      &p->cor.x, &p->cor.z, &p->cor.s, &p->cor.w, &p->ntmp};
     for (size_t i = 0; i < sizeof arr / sizeof *arr; i++) {
         free(*arr[i]);
         *arr[i] = xcalloc(nn, sizeof(double));
@@ -164,8 +166,24 @@ static int build(ipm *p, bl_error *err)
     return 0;
 }
 
+/* Debian's CHOLMOD opens OpenMP regions of a fixed 4 threads inside every
+ * supernodal factorization, and OpenBLAS its own threads for every BLAS
+ * call; on the 2-core machines this runs on, the threads cost more in
+ * wake-ups than they give (10,050 blocks: 12.0 s with both, 5.6 s with
+ * neither; doc/performance.md).  Zero active OpenMP levels makes every
+ * region run on the calling thread.  Looked up at run time, so that
+ * nothing breaks where these libraries are built differently. */
+static void one_thread(void)
+{
+    void (*max_levels)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "omp_set_max_active_levels");
+    void (*blas_threads)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
+    if (max_levels) max_levels(0);
+    if (blas_threads) blas_threads(1);
+}
+
 static void *create(const bl_lp_problem *pr, const bl_lp_settings *s, bl_error *err)
 {
+    one_thread();
     ipm *p = calloc(1, sizeof *p);
     if (!p) {
         bl_error_set(err, "lp: out of memory");
@@ -314,6 +332,20 @@ static int msolve(ipm *p, double *rhs)
     return 0;
 }
 
+/* The rest of a direction from its dx: dz, ds, dw. */
+static void complete(ipm *p, step *d, int full)
+{
+    for (int j = 0; j < p->n; j++) {
+        d->z[j] = (p->xz[j] - p->z[j] * d->x[j]) / p->x[j];
+        if (p->kind[j] == COL_BOXED) {
+            d->s[j] = (full ? p->ru[j] : 0.0) - d->x[j];
+            d->w[j] = (p->sw[j] - p->w[j] * d->s[j]) / p->s[j];
+        } else {
+            d->s[j] = d->w[j] = 0.0;
+        }
+    }
+}
+
 /* One Newton direction into d for the complementarity targets xz (n) and
  * sw (n, boxed columns).  With full = 1 it also removes the residuals rp,
  * rd, ru and ra; with full = 0 it is a pure centrality correction.
@@ -334,14 +366,45 @@ static int direction(ipm *p, step *d, int full, double ra, double gv)
     d->a = gv != 0.0 ? (dot(p->g, d->y, m) - (full ? ra : 0.0)) / gv : 0.0;
     for (int i = 0; i < m; i++) d->y[i] -= p->v[i] * d->a;
     mul_At(p, d->y, d->x);
-    for (int j = 0; j < n; j++) {
-        d->x[j] = p->theta[j] * (d->x[j] - p->rhat[j]);
-        d->z[j] = (p->xz[j] - p->z[j] * d->x[j]) / p->x[j];
-        if (p->kind[j] == COL_BOXED) {
-            d->s[j] = (full ? p->ru[j] : 0.0) - d->x[j];
-            d->w[j] = (p->sw[j] - p->w[j] * d->s[j]) / p->s[j];
-        } else {
-            d->s[j] = d->w[j] = 0.0;
+    for (int j = 0; j < n; j++) d->x[j] = p->theta[j] * (d->x[j] - p->rhat[j]);
+    complete(p, d, full);
+    return 0;
+}
+
+/* Refines the primal rows of the direction that will be taken: M is nearly
+ * singular along the mechanism, so A dx + g da drifts from rp by round-off
+ * in q - v da (the primal residual of the iterates grew to 1e-5 at 10,050
+ * blocks without this).  The correction M dy' + g da' = e, g.dy' = 0,
+ * dx' = Theta A^T dy' (with dz', ds', dw' from the linearized
+ * complementarity) leaves the other equations of the step as they were. */
+static int refine(ipm *p, step *d, double gv)
+{
+    int n = p->n, m = p->m;
+    for (int pass = 0; pass < 2; pass++) {
+        mul_A(p, d->x, p->tmp);
+        double en = 0.0, rn = 0.0;
+        for (int i = 0; i < m; i++) {
+            p->tmp[i] = p->rp[i] - p->tmp[i] - p->g[i] * d->a;
+            en = fmax(en, fabs(p->tmp[i]));
+            rn = fmax(rn, fabs(p->rp[i]));
+        }
+        if (en <= 1e-14 * (1.0 + rn)) break;
+        if (msolve(p, p->tmp)) return -1;
+        double da = gv != 0.0 ? dot(p->g, p->tmp, m) / gv : 0.0;
+        for (int i = 0; i < m; i++) {
+            p->tmp[i] -= p->v[i] * da;
+            d->y[i] += p->tmp[i];
+        }
+        d->a += da;
+        mul_At(p, p->tmp, p->ntmp);
+        for (int j = 0; j < n; j++) {
+            double dx = p->theta[j] * p->ntmp[j];
+            d->x[j] += dx;
+            d->z[j] -= p->z[j] / p->x[j] * dx;
+            if (p->kind[j] == COL_BOXED) {
+                d->s[j] -= dx;
+                d->w[j] += p->w[j] / p->s[j] * dx;
+            }
         }
     }
     return 0;
@@ -599,8 +662,9 @@ static bl_lp_status solve(void *e)
             td = nd;
         }
 
-        tp = fmin(1.0, 0.99 * tp);
-        td = fmin(1.0, 0.99 * td);
+        if (refine(p, d, gv)) { status = BL_LP_FAILED; break; }
+        tp = fmin(1.0, 0.99 * max_step(p, p->x, d->x, p->s, d->s));
+        td = fmin(1.0, 0.99 * max_step(p, p->z, d->z, p->w, d->w));
         for (int j = 0; j < n; j++) {
             p->x[j] += tp * d->x[j];
             p->z[j] += td * d->z[j];
