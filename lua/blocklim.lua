@@ -14,6 +14,7 @@ return function(core)
     return report.wrap(r)
   end
   report.draw = core.draw
+  report.details = core.details
 
   function M.model(t)
     current = core.model(t or {})

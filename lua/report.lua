@@ -2,8 +2,22 @@
 local report = {}
 
 local Result = {}
-Result.__index = Result
 report.Result = Result
+
+-- r.mechanism and r.interfaces are built from the solution when first read:
+-- at 40,000 blocks they would be most of the result's memory.
+local Interface, Velocity = {}, {}
+function Result.__index(r, k)
+  if Result[k] then return Result[k] end
+  if k ~= "mechanism" and k ~= "interfaces" then return nil end
+  local mechanism, interfaces = report.details(rawget(r, "_solution"))
+  if not mechanism then return nil end
+  for _, u in ipairs(mechanism) do setmetatable(u, Velocity) end
+  for _, i in ipairs(interfaces) do setmetatable(i, Interface) end
+  rawset(r, "mechanism", mechanism)
+  rawset(r, "interfaces", interfaces)
+  return rawget(r, k)
+end
 
 local function g(x)
   return ("%.3g"):format(x)
@@ -66,13 +80,11 @@ Result.svg = picture("svg")
 Result.png = picture("png")
 
 -- One line per interface and per block velocity, for the prompt.
-local Interface = {}
 function Interface.__tostring(k)
   local s = ("interface %d-%d: %s, N = %.4g, T = %.4g"):format(k.a, k.b, k.state, k.N, k.T)
   if k.hinge then s = s .. (", hinge at (%.4g, %.4g)"):format(k.hinge[1], k.hinge[2]) end
   return s
 end
-local Velocity = {}
 function Velocity.__tostring(u)
   return ("vx = %.4g, vy = %.4g, omega = %.4g"):format(u[1], u[2], u[3])
 end
@@ -93,8 +105,6 @@ function report.blocks(list) return setmetatable(list, Blocks) end
 
 -- Gives a fresh result from the core its metatables.
 function report.wrap(r)
-  for _, k in ipairs(r.interfaces or {}) do setmetatable(k, Interface) end
-  for _, u in ipairs(r.mechanism or {}) do setmetatable(u, Velocity) end
   return setmetatable(r, Result)
 end
 

@@ -627,10 +627,11 @@ static bl_lp_status solve(void *e)
         td = max_step(p, p->z, d->z, p->w, d->w);
 
         /* Gondzio's correctors: push the products of the trial point at a
-         * longer step back into [0.1, 10] sigma mu, keep the correction
-         * while it lengthens the step. */
-        for (int k = 0; k < 3 && fmin(tp, td) < 1.0; k++) {
-            double ttp = fmin(1.0, 1.5 * tp + 0.1), ttd = fmin(1.0, 1.5 * td + 0.1);
+         * step longer by 0.2 back into [0.1, 10] sigma mu, and keep the
+         * correction while it lengthens the step.  Up to 5: at 10,050
+         * blocks 3 correctors took 41 iterations, 5 took 35, 8 took 34. */
+        for (int k = 0; k < 5 && fmin(tp, td) < 1.0; k++) {
+            double ttp = fmin(1.0, tp + 0.2), ttd = fmin(1.0, td + 0.2);
             double lo = 0.1 * sigma * mu, hi = 10.0 * sigma * mu;
             for (int j = 0; j < n; j++) {
                 double v = (p->x[j] + ttp * d->x[j]) * (p->z[j] + ttd * d->z[j]);

@@ -561,6 +561,25 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     set_number(L, "work", s->res.work);
     lua_setfield(L, -2, "residuals");
 
+    int count[4] = {0};
+    for (int k = 0; k < m->ninterfaces; k++) count[s->state[k]]++;
+    lua_createtable(L, 0, 4);
+    for (int st = 0; st < 4; st++) {
+        lua_pushinteger(L, count[st]);
+        lua_setfield(L, -2, bl_state_name((bl_state)st));
+    }
+    lua_setfield(L, -2, "states");
+}
+
+/* core.details(solution) -> mechanism, interfaces: the per-block and
+ * per-interface tables of a result, built when first read (lua/report.lua):
+ * at 40,000 blocks they are most of a result's memory. */
+static int core_details(lua_State *L)
+{
+    bl_solution **p = luaL_checkudata(L, 1, SOLUTION_MT);
+    const bl_solution *s = *p;
+    const bl_model *m = s->model;
+    if (!s->has_mechanism) return 0;
     lua_createtable(L, m->nblocks, 0);
     for (int i = 0; i < m->nblocks; i++) {
         lua_createtable(L, 3, 0);
@@ -570,14 +589,11 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         }
         lua_rawseti(L, -2, i + 1);
     }
-    lua_setfield(L, -2, "mechanism");
 
-    int count[4] = {0};
     lua_createtable(L, m->ninterfaces, 0);
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
         const double *f = s->force + 4 * k;
-        count[s->state[k]]++;
         lua_createtable(L, 0, 10);
         lua_pushinteger(L, in->a + 1);
         lua_setfield(L, -2, "a");
@@ -606,13 +622,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         set_number(L, "mu", in->mu);
         lua_rawseti(L, -2, k + 1);
     }
-    lua_setfield(L, -2, "interfaces");
-    lua_createtable(L, 0, 4);
-    for (int st = 0; st < 4; st++) {
-        lua_pushinteger(L, count[st]);
-        lua_setfield(L, -2, bl_state_name((bl_state)st));
-    }
-    lua_setfield(L, -2, "states");
+    return 2;
 }
 
 /* Ctrl-C during a solve: the core polls the flag; the handler that was in
@@ -728,6 +738,7 @@ int luaopen_blocklim(lua_State *L)
         {"load", model_load},           {"solve", model_solve},       {"stats", model_stats},
         {"block_info", model_block_info}, {NULL, NULL}};
     static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw},
+                                     {"details", core_details},
                                      {"clock", core_clock}, {NULL, NULL}};
 
     if (luaL_newmetatable(L, MODEL_MT)) {
