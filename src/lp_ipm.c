@@ -50,6 +50,7 @@ typedef struct ipm {
     cholmod_common cm;
     cholmod_sparse *F;  /* A with columns scaled by sqrt(Theta) */
     cholmod_factor *L;
+    cholmod_dense *X, *Y, *E; /* cholmod_solve2's solution and workspace, reused */
     double *aval;       /* values of A, in F's pattern */
     /* iterates and work */
     double *x, *z, *s, *w, *y, a;
@@ -68,6 +69,9 @@ static void destroy(void *e)
     if (!p) return;
     if (p->F) cholmod_free_sparse(&p->F, &p->cm);
     if (p->L) cholmod_free_factor(&p->L, &p->cm);
+    cholmod_free_dense(&p->X, &p->cm);
+    cholmod_free_dense(&p->Y, &p->cm);
+    cholmod_free_dense(&p->E, &p->cm);
     cholmod_finish(&p->cm);
     double **d[] = {&p->uval, &p->lo,    &p->hi, &p->rhs,  &p->obj, &p->sign, &p->shift,
                     &p->U,    &p->c,     &p->b,  &p->g,    &p->aval, &p->x,   &p->z,
@@ -325,10 +329,9 @@ static int msolve(ipm *p, double *rhs)
     B.x = rhs;
     B.xtype = CHOLMOD_REAL;
     B.dtype = CHOLMOD_DOUBLE;
-    cholmod_dense *X = cholmod_solve(CHOLMOD_A, p->L, &B, &p->cm);
-    if (!X) return -1;
-    memcpy(rhs, X->x, (size_t)p->m * sizeof *rhs);
-    cholmod_free_dense(&X, &p->cm);
+    if (!cholmod_solve2(CHOLMOD_A, p->L, &B, NULL, &p->X, NULL, &p->Y, &p->E, &p->cm))
+        return -1;
+    memcpy(rhs, p->X->x, (size_t)p->m * sizeof *rhs);
     return 0;
 }
 
