@@ -13,6 +13,7 @@ void bl_solve_options_default(bl_solve_options *o)
     o->tolerance = 1e-7;
     o->verbose = 0;
     o->time_limit = 0;
+    o->iterations = 0;
     o->lp = BL_LP_AUTO;
     o->mps = NULL;
 }
@@ -71,6 +72,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     bl_lp_settings_default(&ls);
     ls.verbose = o->verbose;
     ls.max_seconds = o->time_limit;
+    ls.max_iterations = o->iterations;
     ls.engine = o->lp;
     bl_lp_problem p = {sys->nrows, sys->ncols, sys->colptr, sys->rowind, sys->val,
                        sys->lo,    sys->hi,    sys->rhs,    sys->obj};

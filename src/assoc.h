@@ -14,6 +14,7 @@ typedef struct bl_solve_options {
     double tolerance;   /* verification tolerance (default 1e-7) */
     int verbose;        /* let the LP engine print */
     double time_limit;  /* seconds for the LP, 0: none */
+    int iterations;     /* iteration cap of the LP engine, 0: its default */
     bl_lp_engine_kind lp;
     const char *mps;    /* write the LP to this MPS file first, or NULL */
 } bl_solve_options;

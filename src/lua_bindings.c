@@ -639,7 +639,7 @@ static void on_sigint(int sig)
 static int model_solve(lua_State *L)
 {
     static const char *const fields[] = {"flow", "method", "lp", "tolerance", "time_limit",
-                                         "verbose", "mps", NULL};
+                                         "iterations", "verbose", "mps", NULL};
     static const char *const flows[] = {"associative", NULL};
     static const char *const methods[] = {"assoc", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
@@ -660,6 +660,10 @@ static int model_solve(lua_State *L)
         o.mps = lua_tostring(L, -1); /* stays on the stack during the solve */
     }
     o.time_limit = number_field(L, 2, "solve", "time_limit", 0, POSITIVE);
+    double iters = number_field(L, 2, "solve", "iterations", 0, POSITIVE);
+    if (iters != floor(iters) || iters > 1e9)
+        fail(L, "solve: field 'iterations' must be a positive integer, got %g", iters);
+    o.iterations = (int)iters;
 
     bl_solution **box = lua_newuserdatauv(L, sizeof *box, 0);
     *box = NULL;

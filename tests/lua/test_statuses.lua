@@ -39,5 +39,13 @@ for _, lp in ipairs { "simplex", "ipm" } do
   T.ok(r.message:find("no equilibrium", 1, true), lp .. ": infeasible: the sentence says why")
   T.ok(not r.verified, lp .. ": infeasible: nothing claimed verified")
   T.ok(tostring(r):find("infeasible", 1, true), lp .. ": infeasible: the printed result says so")
+
+  -- An iteration cap far below what W4 needs (about 290 simplex iterations,
+  -- 12 interior-point ones) stops the engine without an answer.
+  model { mu = 0.65 }
+  wall { courses = require("walls").W4, unit = { 0.4, 0.175 } }
+  r = solve { lp = lp, iterations = 3 }
+  T.eq(r.status, "iteration limit", lp .. ": 3 iterations on W4: status iteration limit")
+  T.ok(not r.verified and r.residuals == nil, lp .. ": iteration limit: no answer claimed")
 end
 T.done()
