@@ -14,7 +14,6 @@ return function(core)
     return report.wrap(r)
   end
   report.draw = core.draw
-  report.details = core.details
 
   function M.model(t)
     current = core.model(t or {})

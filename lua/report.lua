@@ -4,20 +4,8 @@ local report = {}
 local Result = {}
 report.Result = Result
 
--- r.mechanism and r.interfaces are built from the solution when first read:
--- at 40,000 blocks they would be most of the result's memory.
+Result.__index = Result
 local Interface, Velocity = {}, {}
-function Result.__index(r, k)
-  if Result[k] then return Result[k] end
-  if k ~= "mechanism" and k ~= "interfaces" then return nil end
-  local mechanism, interfaces = report.details(rawget(r, "_solution"))
-  if not mechanism then return nil end
-  for _, u in ipairs(mechanism) do setmetatable(u, Velocity) end
-  for _, i in ipairs(interfaces) do setmetatable(i, Interface) end
-  rawset(r, "mechanism", mechanism)
-  rawset(r, "interfaces", interfaces)
-  return rawget(r, k)
-end
 
 local function g(x)
   return ("%.3g"):format(x)
@@ -105,6 +93,8 @@ function report.blocks(list) return setmetatable(list, Blocks) end
 
 -- Gives a fresh result from the core its metatables.
 function report.wrap(r)
+  for _, k in ipairs(r.interfaces or {}) do setmetatable(k, Interface) end
+  for _, u in ipairs(r.mechanism or {}) do setmetatable(u, Velocity) end
   return setmetatable(r, Result)
 end
 

@@ -504,6 +504,8 @@ static void push_pair(lua_State *L, double a, double b)
     push_point(L, bl_v2(a, b));
 }
 
+static void push_details(lua_State *L, const bl_solution *s);
+
 /* Builds the result table of doc/guide.md from s (on the stack at sidx). */
 static void push_result(lua_State *L, const bl_solution *s, int sidx)
 {
@@ -561,6 +563,9 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     set_number(L, "work", s->res.work);
     lua_setfield(L, -2, "residuals");
 
+    push_details(L, s);
+    lua_setfield(L, -3, "interfaces");
+    lua_setfield(L, -2, "mechanism");
     int count[4] = {0};
     for (int k = 0; k < m->ninterfaces; k++) count[s->state[k]]++;
     lua_createtable(L, 0, 4);
@@ -571,15 +576,10 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     lua_setfield(L, -2, "states");
 }
 
-/* core.details(solution) -> mechanism, interfaces: the per-block and
- * per-interface tables of a result, built when first read (lua/report.lua):
- * at 40,000 blocks they are most of a result's memory. */
-static int core_details(lua_State *L)
+/* Pushes a result's mechanism (per block) and interfaces tables. */
+static void push_details(lua_State *L, const bl_solution *s)
 {
-    bl_solution **p = luaL_checkudata(L, 1, SOLUTION_MT);
-    const bl_solution *s = *p;
     const bl_model *m = s->model;
-    if (!s->has_mechanism) return 0;
     lua_createtable(L, m->nblocks, 0);
     for (int i = 0; i < m->nblocks; i++) {
         lua_createtable(L, 3, 0);
@@ -622,7 +622,6 @@ static int core_details(lua_State *L)
         set_number(L, "mu", in->mu);
         lua_rawseti(L, -2, k + 1);
     }
-    return 2;
 }
 
 /* Ctrl-C during a solve: the core polls the flag; the handler that was in
@@ -742,7 +741,6 @@ int luaopen_blocklim(lua_State *L)
         {"load", model_load},           {"solve", model_solve},       {"stats", model_stats},
         {"block_info", model_block_info}, {NULL, NULL}};
     static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw},
-                                     {"details", core_details},
                                      {"clock", core_clock}, {NULL, NULL}};
 
     if (luaL_newmetatable(L, MODEL_MT)) {
