@@ -18,14 +18,17 @@ void bl_system_free(bl_system *s)
     free(s->col_point);
     free(s->col_kind);
     free(s->col_nt);
+    free(s->cohesion);
+    free(s->mu);
     free(s);
 }
 
 /* Columns at one contact point of interface k. */
-static int point_columns(const bl_interface *k, double C, bl_column_kind kind[3])
+static int point_columns(const bl_interface *k, double C, bl_friction_form form,
+                         bl_column_kind kind[3])
 {
     int n = 0;
-    if (isinf(k->mu)) {
+    if (isinf(k->mu) || form == BL_FRICTION_FIXED) {
         kind[n++] = BL_COL_NORMAL;
         kind[n++] = BL_COL_SHEAR;
         return n;
@@ -48,10 +51,11 @@ static double cohesion_share(const bl_model *m, const bl_interface *k)
     return k->cohesion * len * th / 2.0;
 }
 
-bl_system *bl_system_build(const bl_model *m, bl_error *err)
+bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *err)
 {
     bl_system *s = calloc(1, sizeof *s);
     if (!s) goto oom;
+    s->form = form;
     int nb = m->nblocks, nfree = 0;
     double wsum = 0.0, lsum = 0.0;
     s->block_row = malloc((size_t)(nb ? nb : 1) * sizeof *s->block_row);
@@ -74,7 +78,8 @@ bl_system *bl_system_build(const bl_model *m, bl_error *err)
     int nforce = 0;
     bl_column_kind kind[3];
     for (int k = 0; k < m->ninterfaces; k++)
-        nforce += 2 * point_columns(&m->interfaces[k], cohesion_share(m, &m->interfaces[k]), kind);
+        nforce += 2 * point_columns(&m->interfaces[k], cohesion_share(m, &m->interfaces[k]), form,
+                                    kind);
     s->nforce = nforce;
     s->ncols = nforce + 1;
     size_t nc = (size_t)s->ncols, nnz_max = 6 * (size_t)nforce + (size_t)s->nrows;
@@ -89,7 +94,10 @@ bl_system *bl_system_build(const bl_model *m, bl_error *err)
     s->col_kind = malloc(nc * sizeof *s->col_kind);
     s->col_nt = malloc(2 * nc * sizeof *s->col_nt);
     double *fL = calloc((size_t)s->nrows, sizeof *fL);
-    if (!s->colptr || !s->rowind || !s->val || !s->lo || !s->hi || !s->obj || !s->rhs ||
+    s->npoints = 2 * m->ninterfaces;
+    s->cohesion = calloc((size_t)s->npoints + 1, sizeof *s->cohesion);
+    s->mu = calloc((size_t)s->npoints + 1, sizeof *s->mu);
+    if (!s->cohesion || !s->mu || !s->colptr || !s->rowind || !s->val || !s->lo || !s->hi || !s->obj || !s->rhs ||
         !s->col_point || !s->col_kind || !s->col_nt || !fL) {
         free(fL);
         goto oom;
@@ -99,7 +107,9 @@ bl_system *bl_system_build(const bl_model *m, bl_error *err)
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
         double C = cohesion_share(m, in) / s->W0;
-        int nk = point_columns(in, C, kind);
+        int nk = point_columns(in, C, form, kind);
+        s->cohesion[2 * k] = s->cohesion[2 * k + 1] = C;
+        s->mu[2 * k] = s->mu[2 * k + 1] = in->mu;
         bl_vec2 nu = in->normal, tau = bl_v2(-nu.y, nu.x);
         for (int e = 0; e < 2; e++) {
             for (int q = 0; q < nk; q++, c++) {
@@ -108,7 +118,12 @@ bl_system *bl_system_build(const bl_model *m, bl_error *err)
                 case BL_COL_CONE_POS: dt = in->mu; break;
                 case BL_COL_CONE_NEG: dt = -in->mu; break;
                 case BL_COL_NORMAL: break;
-                case BL_COL_SHEAR: dn = 0.0; dt = 1.0; lo = -INFINITY; break;
+                case BL_COL_SHEAR: /* free without sliding; else bounded by R, from C */
+                    dn = 0.0;
+                    dt = 1.0;
+                    lo = isinf(in->mu) ? -INFINITY : -C;
+                    hi = isinf(in->mu) ? INFINITY : C;
+                    break;
                 case BL_COL_COHESION: dn = 0.0; dt = 1.0; lo = -C; hi = C; break;
                 }
                 bl_vec2 f = bl_v2_add(bl_v2_scale(nu, dn), bl_v2_scale(tau, dt));
@@ -188,6 +203,20 @@ oom:
     bl_system_free(s);
     bl_error_set(err, "solve: out of memory assembling the equilibrium system");
     return NULL;
+}
+
+void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, double *hi)
+{
+    for (int j = 0; j < s->ncols; j++) {
+        lo[j] = s->lo[j];
+        hi[j] = s->hi[j];
+        if (j < s->nforce && s->col_kind[j] == BL_COL_SHEAR && isfinite(s->hi[j])) {
+            int p = s->col_point[j];
+            double R = s->mu[p] * fmax(n[p], 0.0) + s->cohesion[p];
+            lo[j] = -R;
+            hi[j] = R;
+        }
+    }
 }
 
 void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, double *force)

@@ -23,6 +23,13 @@ typedef enum bl_column_kind {
     BL_COL_COHESION    /* n = 0, t = 1,    -C <= x <= C */
 } bl_column_kind;
 
+/* How friction enters the system.  BL_FRICTION_CONE: the Coulomb cone of
+ * (T4), for the associative LP and the certificate of the sequence of LPs.
+ * BL_FRICTION_FIXED: a normal column n >= 0 and a shear column whose bounds
+ * -R <= t <= R are set from given normal forces (bl_system_fixed_bounds):
+ * the seed's Eq. 19, a yield surface without dilatancy. */
+typedef enum bl_friction_form { BL_FRICTION_CONE, BL_FRICTION_FIXED } bl_friction_form;
+
 typedef struct bl_system {
     int nrows, ncols;        /* ncols = nforce + 1 */
     int nforce;              /* force columns; alpha is column nforce */
@@ -36,11 +43,20 @@ typedef struct bl_system {
     signed char *col_kind;   /* per force column: bl_column_kind */
     double *col_nt;          /* per force column: (n, t) of a unit value */
     double L0, W0;           /* length and force scales */
+    bl_friction_form form;
+    double *cohesion;        /* per contact point: C_p / W0 */
+    double *mu;              /* per contact point: the interface's mu */
+    int npoints;             /* 2 per interface */
 } bl_system;
 
 /* Builds the system for m (whose interfaces must be detected).  Returns NULL
  * with err set when the model cannot be assembled. */
-bl_system *bl_system_build(const bl_model *m, bl_error *err);
+bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *err);
+
+/* For a BL_FRICTION_FIXED system: the bounds of every column when the
+ * contact points carry the normal forces n (per point, scaled by W0):
+ * R = mu n + C on the shear columns.  lo and hi have ncols entries. */
+void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, double *hi);
 void bl_system_free(bl_system *s);
 
 /* Physical contact forces (n0, t0, n1, t1 per interface) from x. */

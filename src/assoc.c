@@ -18,41 +18,6 @@ void bl_solve_options_default(bl_solve_options *o)
     o->mps = NULL;
 }
 
-static bl_status from_lp(bl_lp_status st)
-{
-    switch (st) {
-    case BL_LP_OPTIMAL: return BL_OPTIMAL;
-    case BL_LP_INFEASIBLE: return BL_INFEASIBLE;
-    case BL_LP_UNBOUNDED: return BL_UNBOUNDED;
-    case BL_LP_ITERATION_LIMIT: return BL_ITERATION_LIMIT;
-    case BL_LP_TIME_LIMIT: return BL_TIME_LIMIT;
-    case BL_LP_INTERRUPTED: return BL_INTERRUPTED;
-    default: return BL_NUMERICAL;
-    }
-}
-
-/* A solution with its arrays allocated for the model copy c (owned). */
-static bl_solution *solution_new(bl_model *c)
-{
-    bl_solution *s = calloc(1, sizeof *s);
-    if (!s) {
-        bl_model_free(c);
-        return NULL;
-    }
-    s->model = c;
-    size_t nb = (size_t)c->nblocks, ni = (size_t)c->ninterfaces;
-    s->u = calloc(3 * nb + 1, sizeof *s->u);
-    s->force = calloc(4 * ni + 1, sizeof *s->force);
-    s->state = calloc(ni + 1, sizeof *s->state);
-    s->hinge = calloc(ni + 1, sizeof *s->hinge);
-    if (!s->u || !s->force || !s->state || !s->hinge) {
-        bl_solution_free(s);
-        return NULL;
-    }
-    for (size_t k = 0; k < ni; k++) s->hinge[k] = -1;
-    return s;
-}
-
 int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl_error *err)
 {
     bl_interrupt_clear();
@@ -61,9 +26,9 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     double t1 = bl_clock();
 
     bl_model *copy = bl_model_copy(m);
-    bl_solution *s = copy ? solution_new(copy) : NULL;
+    bl_solution *s = copy ? bl_solution_new(copy) : NULL;
     if (!s) return bl_error_set(err, "solve: out of memory");
-    bl_system *sys = bl_system_build(m, err);
+    bl_system *sys = bl_system_build(m, BL_FRICTION_CONE, err);
     if (!sys) {
         bl_solution_free(s);
         return -1;
@@ -86,7 +51,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     bl_lp_status st = bl_lp_solve(lp);
     double t3 = bl_clock();
 
-    s->status = from_lp(st);
+    s->status = bl_status_of_lp(st);
     s->lp = bl_lp_engine(lp);
     s->iterations = bl_lp_iterations(lp);
     s->factor_nnz = bl_lp_factor_nnz(lp);

@@ -34,6 +34,40 @@ const char *bl_state_name(bl_state s)
     return names[s];
 }
 
+bl_solution *bl_solution_new(bl_model *c)
+{
+    bl_solution *s = calloc(1, sizeof *s);
+    if (!s) {
+        bl_model_free(c);
+        return NULL;
+    }
+    s->model = c;
+    size_t nb = (size_t)c->nblocks, ni = (size_t)c->ninterfaces;
+    s->u = calloc(3 * nb + 1, sizeof *s->u);
+    s->force = calloc(4 * ni + 1, sizeof *s->force);
+    s->state = calloc(ni + 1, sizeof *s->state);
+    s->hinge = calloc(ni + 1, sizeof *s->hinge);
+    if (!s->u || !s->force || !s->state || !s->hinge) {
+        bl_solution_free(s);
+        return NULL;
+    }
+    for (size_t k = 0; k < ni; k++) s->hinge[k] = -1;
+    return s;
+}
+
+bl_status bl_status_of_lp(bl_lp_status st)
+{
+    switch (st) {
+    case BL_LP_OPTIMAL: return BL_OPTIMAL;
+    case BL_LP_INFEASIBLE: return BL_INFEASIBLE;
+    case BL_LP_UNBOUNDED: return BL_UNBOUNDED;
+    case BL_LP_ITERATION_LIMIT: return BL_ITERATION_LIMIT;
+    case BL_LP_TIME_LIMIT: return BL_TIME_LIMIT;
+    case BL_LP_INTERRUPTED: return BL_INTERRUPTED;
+    default: return BL_NUMERICAL;
+    }
+}
+
 void bl_solution_free(bl_solution *s)
 {
     if (!s) return;

@@ -6,6 +6,7 @@
 #ifndef BL_SOLUTION_H
 #define BL_SOLUTION_H
 
+#include "lp.h"
 #include "model.h"
 
 typedef enum bl_status {
@@ -68,7 +69,14 @@ typedef struct bl_solution {
     const char *lp;          /* engine name, static */
 } bl_solution;
 
+/* A solution for the model copy c (taken over: freed with the solution, or
+ * at once when allocation fails), with its arrays allocated; NULL when out
+ * of memory. */
+bl_solution *bl_solution_new(bl_model *c);
 void bl_solution_free(bl_solution *s);
+
+/* The status of a solve whose LP ended with st (alpha's sign aside). */
+bl_status bl_status_of_lp(bl_lp_status st);
 
 /* Relative velocity of block b with respect to block a at point p,
  * from the mechanism u (either block may be a support). */

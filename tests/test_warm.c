@@ -41,7 +41,7 @@ static bl_system *w4(void)
     bl_vec2 b[4] = {{0, -0.175}, {2, -0.175}, {2, 0}, {0, 0}};
     assert_int_equal(bl_model_add_block(m, b, 4, 1, 0, 0, NULL), 0);
     assert_int_equal(bl_contact_detect(m, NULL), 0);
-    bl_system *s = bl_system_build(m, NULL);
+    bl_system *s = bl_system_build(m, BL_FRICTION_CONE, NULL);
     bl_model_free(m);
     assert_non_null(s);
     return s;
