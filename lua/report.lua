@@ -16,11 +16,16 @@ function Result.__tostring(r)
   local function say(fmt, ...) out[#out + 1] = fmt:format(...) end
   local size = r.size
   if r.status == "optimal" or r.status == "unstable" then
-    say("alpha = %.6g  (%s, %s)", r.alpha, r.status, r.verified and "verified" or "NOT verified")
+    say("alpha = %.6g  (%s, %s%s)", r.alpha, r.status, r.certified and "certified, " or "",
+        r.verified and "verified" or "NOT verified")
   else
     say("no alpha  (%s)", r.status)
   end
   say("  %s", r.message)
+  if r.alpha_assoc then
+    say("  associative alpha = %.6g; %d LPs in the sequence%s", r.alpha_assoc, r.lps,
+        r.certified and ", the last one its certificate" or "")
+  end
   say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
       r.lp, r.iterations, size.rows, size.columns)
   local line = ("  %d blocks, %d support%s, %d interfaces"):format(
@@ -37,6 +42,10 @@ function Result.__tostring(r)
         g(r.tolerance), g(e.equilibrium), g(e.yield), g(e.admissibility))
     say("    complementarity %s, normalization %s, work %s", g(e.complementarity),
         g(e.normalization), g(e.work))
+    if e.flow then
+      say("    flow %s, dilatancy %s (flow-rule residuals judged against the slip threshold %s)",
+          g(e.flow), g(e.dilatancy), g(r.slip))
+    end
   end
   local t = r.timings
   say("  time %.3f s: detection %.3f, assembly %.3f, solve %.3f, verification %.3f", t.total,

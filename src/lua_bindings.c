@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "assoc.h"
+#include "seqlp.h"
 #include "contact.h"
 #include "draw.h"
 #include "model.h"
@@ -520,10 +521,24 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     lua_setfield(L, -2, "message");
     lua_pushboolean(L, s->verified);
     lua_setfield(L, -2, "verified");
-    lua_pushstring(L, "assoc");
+    lua_pushstring(L, s->method);
     lua_setfield(L, -2, "method");
-    lua_pushstring(L, "associative");
+    lua_pushstring(L, s->flow);
     lua_setfield(L, -2, "flow");
+    if (strcmp(s->method, "seqlp") == 0) {
+        set_number(L, "alpha_assoc", s->alpha_assoc);
+        lua_pushboolean(L, s->certified);
+        lua_setfield(L, -2, "certified");
+        lua_pushinteger(L, s->lps);
+        lua_setfield(L, -2, "lps");
+        set_number(L, "slip", s->slip);
+        lua_createtable(L, s->nhistory, 0);
+        for (int i = 0; i < s->nhistory; i++) {
+            lua_pushnumber(L, s->history[i]);
+            lua_rawseti(L, -2, i + 1);
+        }
+        lua_setfield(L, -2, "history");
+    }
     lua_pushstring(L, s->lp ? s->lp : "");
     lua_setfield(L, -2, "lp");
     lua_pushinteger(L, s->iterations);
@@ -561,6 +576,10 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     set_number(L, "complementarity", s->res.complementarity);
     set_number(L, "normalization", s->res.normalization);
     set_number(L, "work", s->res.work);
+    if (!isnan(s->res.flow)) {
+        set_number(L, "flow", s->res.flow);
+        set_number(L, "dilatancy", s->res.dilatancy);
+    }
     lua_setfield(L, -2, "residuals");
 
     push_details(L, s);
@@ -637,16 +656,31 @@ static void on_sigint(int sig)
 
 static int model_solve(lua_State *L)
 {
-    static const char *const fields[] = {"flow", "method", "lp", "tolerance", "time_limit",
-                                         "iterations", "verbose", "mps", NULL};
-    static const char *const flows[] = {"associative", NULL};
-    static const char *const methods[] = {"assoc", NULL};
+    static const char *const fields[] = {"flow",       "method",     "lp",      "tolerance",
+                                         "time_limit", "iterations", "verbose", "mps",
+                                         "beta",       "settle",     "slip",    "lps",
+                                         NULL};
+    static const char *const flows[] = {"associative", "nonassociative", NULL};
+    static const char *const methods[] = {"assoc", "seqlp", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
     bl_model *m = check_model(L, 1);
     opt_table(L, 2);
     check_fields(L, 2, "solve", fields, 0);
-    choice_field(L, 2, "solve", "flow", flows, 0);
-    choice_field(L, 2, "solve", "method", methods, 0);
+    int flow = choice_field(L, 2, "solve", "flow", flows, 0);
+    int method = choice_field(L, 2, "solve", "method", methods, flow);
+    if (method != flow)
+        fail(L, "solve: method \"%s\" solves the %s flow rule, not flow = \"%s\"",
+             methods[method], flows[method], flows[flow]);
+    bl_seqlp_options so;
+    bl_seqlp_options_default(&so);
+    so.beta = number_field(L, 2, "solve", "beta", so.beta, POSITIVE);
+    if (so.beta > 1) fail(L, "solve: field 'beta' must be in (0, 1], got %g", so.beta);
+    so.settle = number_field(L, 2, "solve", "settle", so.settle, POSITIVE);
+    so.slip = number_field(L, 2, "solve", "slip", so.slip, POSITIVE);
+    double cap = number_field(L, 2, "solve", "lps", so.max_lps, POSITIVE);
+    if (cap != floor(cap) || cap < 2 || cap > 1e6)
+        fail(L, "solve: field 'lps' must be an integer of at least 2, got %g", cap);
+    so.max_lps = (int)cap;
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;
     bl_solve_options_default(&o);
@@ -675,7 +709,8 @@ static int model_solve(lua_State *L)
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old);
     previous_sigint = old;
-    int rc = bl_assoc_solve(m, &o, box, &err);
+    so.base = o;
+    int rc = method ? bl_seqlp_solve(m, &so, box, &err) : bl_assoc_solve(m, &o, box, &err);
     sigaction(SIGINT, &old, NULL);
     if (rc) return fail(L, "%s", err.msg);
     if ((*box)->status == BL_INTERRUPTED)

@@ -12,6 +12,7 @@ static const char *const status_names[] = {
     [BL_TIME_LIMIT] = "time limit",
     [BL_INTERRUPTED] = "interrupted",
     [BL_NUMERICAL] = "numerical trouble",
+    [BL_UNCERTIFIED] = "not certified",
 };
 
 static const char *const status_sentences[] = {
@@ -23,6 +24,7 @@ static const char *const status_sentences[] = {
     [BL_TIME_LIMIT] = "stopped at the time limit before an answer was found",
     [BL_INTERRUPTED] = "interrupted by the user before an answer was found",
     [BL_NUMERICAL] = "the LP engine failed numerically; no answer",
+    [BL_UNCERTIFIED] = "the sequence of LPs reached its cap without a certified answer",
 };
 
 const char *bl_status_name(bl_status s) { return status_names[s]; }
@@ -52,6 +54,9 @@ bl_solution *bl_solution_new(bl_model *c)
         return NULL;
     }
     for (size_t k = 0; k < ni; k++) s->hinge[k] = -1;
+    s->method = "assoc";
+    s->flow = "associative";
+    s->res.flow = s->res.dilatancy = NAN;
     return s;
 }
 
@@ -76,6 +81,7 @@ void bl_solution_free(bl_solution *s)
     free(s->force);
     free(s->state);
     free(s->hinge);
+    free(s->history);
     free(s);
 }
 

@@ -17,7 +17,8 @@ typedef enum bl_status {
     BL_ITERATION_LIMIT,
     BL_TIME_LIMIT,
     BL_INTERRUPTED,
-    BL_NUMERICAL     /* the LP engine failed */
+    BL_NUMERICAL,    /* the LP engine failed */
+    BL_UNCERTIFIED   /* the sequence of LPs found no certified answer */
 } bl_status;
 
 /* The status word the Lua side shows ("optimal", "unstable", ...) and a
@@ -42,6 +43,9 @@ typedef struct bl_residuals {
     double complementarity; /* max |x_j (A^T u)_j| / (X V) */
     double normalization;   /* |fL . u - 1| */
     double work;            /* |alpha fL.u + fD.u + D| / |alpha fL . u| + |fD.u| */
+    /* non-associative flow only (NAN otherwise): */
+    double flow;            /* friction opposing the slip: |t dt + R |dt|| / (X V) */
+    double dilatancy;       /* opening where a loaded point slides, / V */
 } bl_residuals;
 
 typedef struct bl_timings {
@@ -67,6 +71,15 @@ typedef struct bl_solution {
     int rows, cols;          /* size of the LP */
     double factor_nnz;       /* interior point: non-zeros of the Cholesky factor */
     const char *lp;          /* engine name, static */
+    /* the method and, for the sequence of LPs, its record */
+    const char *method;      /* "assoc" or "seqlp", static */
+    const char *flow;        /* "associative" or "nonassociative", static */
+    double alpha_assoc;      /* the associative multiplier */
+    int certified;           /* a certificate LP accepted (alpha, x, u) */
+    double slip;             /* the slip threshold used, relative */
+    int lps;                 /* LPs solved (all kinds) */
+    int nhistory;
+    double *history;         /* alpha of each LP of the sequence, owned */
 } bl_solution;
 
 /* A solution for the model copy c (taken over: freed with the solution, or

@@ -66,3 +66,86 @@ int bl_verify(const bl_system *s, double alpha, const double *x, const double *y
     return res->equilibrium <= tol && res->yield <= tol && res->admissibility <= tol &&
            res->complementarity <= tol && res->normalization <= tol && res->work <= tol;
 }
+
+/* Per contact point: normal and shear relative velocity (dn, dt) from the
+ * powers of the fixed system's NORMAL and SHEAR columns. */
+static void point_motion(const bl_system *fixed, const double *y, double *w, double *dn,
+                         double *dt)
+{
+    bl_system_power(fixed, y, w);
+    for (int p = 0; p < fixed->npoints; p++) dn[p] = dt[p] = 0.0;
+    for (int j = 0; j < fixed->nforce; j++) {
+        int p = fixed->col_point[j];
+        if (fixed->col_kind[j] == BL_COL_NORMAL) dn[p] = w[j];
+        else dt[p] = w[j];
+    }
+}
+
+int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alpha,
+                       const double *xc, const double *y, double tol, double slip,
+                       bl_residuals *res)
+{
+    int np = cone->npoints;
+    size_t nw = (size_t)(fixed->nforce > cone->nrows ? fixed->nforce : cone->nrows) + 1;
+    double *w = malloc(nw * sizeof *w);
+    double *buf = malloc((4 * (size_t)np + 1) * sizeof *buf);
+    if (!w || !buf) {
+        free(w);
+        free(buf);
+        res->equilibrium = res->yield = res->admissibility = res->complementarity =
+            res->normalization = res->work = res->flow = res->dilatancy = INFINITY;
+        return 0;
+    }
+    double *dn = buf, *dt = buf + np, *n = buf + 2 * np, *t = buf + 3 * np;
+
+    /* statics, on the cone system */
+    bl_system_residual(cone, xc, alpha, w);
+    double eq = 0.0;
+    for (int i = 0; i < cone->nrows; i++) eq = fmax(eq, fabs(w[i]));
+    double yield = 0.0;
+    for (int p = 0; p < np; p++) n[p] = t[p] = 0.0;
+    for (int j = 0; j < cone->nforce; j++) {
+        yield = fmax(yield, fmax(cone->lo[j] - xc[j], xc[j] - cone->hi[j]));
+        n[cone->col_point[j]] += xc[j] * cone->col_nt[2 * j];
+        t[cone->col_point[j]] += xc[j] * cone->col_nt[2 * j + 1];
+    }
+
+    /* kinematics, per contact point */
+    point_motion(fixed, y, w, dn, dt);
+    double V = 0.0, X = 0.0;
+    for (int p = 0; p < np; p++) {
+        V = fmax(V, hypot(dn[p], dt[p]));
+        X = fmax(X, fabs(n[p]));
+    }
+    if (V == 0.0) V = 1.0;
+    if (X == 0.0) X = 1.0;
+    double adm = 0.0, comp = 0.0, flow = 0.0, dil = 0.0, dissipation = 0.0;
+    for (int p = 0; p < np; p++) {
+        double R = isinf(cone->mu[p]) ? 0.0 : cone->mu[p] * n[p] + cone->cohesion[p];
+        adm = fmax(adm, -dn[p] / V);
+        comp = fmax(comp, fabs(n[p] * dn[p]) / (X * V));
+        if (isfinite(cone->mu[p])) {
+            flow = fmax(flow, fabs(t[p] * dt[p] + R * fabs(dt[p])) / (X * V));
+            dissipation += R * fabs(dt[p]);
+        }
+        if (fabs(dt[p]) > slip * V && n[p] > slip * X) dil = fmax(dil, dn[p] / V);
+    }
+    double fLu = 0.0, fDu = 0.0;
+    for (int j = cone->colptr[cone->nforce]; j < cone->colptr[cone->nforce + 1]; j++)
+        fLu += cone->val[j] * y[cone->rowind[j]];
+    for (int i = 0; i < cone->nrows; i++) fDu -= cone->rhs[i] * y[i];
+    double scale = fabs(alpha * fLu) + fabs(fDu) + dissipation;
+    res->equilibrium = eq;
+    res->yield = fmax(yield, 0.0);
+    res->admissibility = fmax(adm, 0.0);
+    res->complementarity = comp;
+    res->normalization = fabs(fLu - 1.0);
+    res->work = scale > 0.0 ? fabs(alpha * fLu + fDu - dissipation) / scale : 0.0;
+    res->flow = flow;
+    res->dilatancy = dil;
+    free(w);
+    free(buf);
+    return res->equilibrium <= tol && res->yield <= tol && res->admissibility <= tol &&
+           res->normalization <= tol && res->complementarity <= slip && res->flow <= slip &&
+           res->dilatancy <= slip && res->work <= slip;
+}

@@ -14,4 +14,16 @@
 int bl_verify(const bl_system *s, double alpha, const double *x, const double *y, double tol,
               bl_residuals *res);
 
+/* The residuals of the seed's Eq. 12 for a non-associative answer: forces
+ * xc on the cone system (the certificate's), the mechanism y (scaled row
+ * multipliers, from the fixed-capacity LP; both systems share their rows).
+ * Kinematics are judged per contact point from the relative velocity
+ * (dn, dt); motions below slip times the largest one count as zero.
+ * Returns 1 when equilibrium, yield, admissibility and normalization are
+ * <= tol and the flow-rule residuals (complementarity, flow, dilatancy,
+ * work) are <= slip. */
+int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alpha,
+                       const double *xc, const double *y, double tol, double slip,
+                       bl_residuals *res);
+
 #endif

@@ -1,0 +1,29 @@
+/* seqlp.h - non-associative friction by a sequence of LPs, with a
+ * certificate (the seed's section 4; doc/theory.md, "The sequence of LPs").
+ *
+ * From the associative answer, each LP fixes the shear capacity of every
+ * contact point from normal forces relaxed over the previous LPs (no
+ * dilatancy); once alpha settles, a certificate LP looks for forces at that
+ * alpha that fit the LP's mechanism under Coulomb's law.  Feasible: the
+ * answer solves the seed's Eq. 12. */
+#ifndef BL_SEQLP_H
+#define BL_SEQLP_H
+
+#include "assoc.h"
+
+typedef struct bl_seqlp_options {
+    bl_solve_options base; /* LP engine, tolerance, limits */
+    double beta;           /* relaxation of the normal forces (0.7) */
+    double settle;         /* |d alpha| <= settle alpha starts a certificate (1e-4) */
+    double slip;           /* motions below slip x the largest count as zero (1e-4) */
+    int max_lps;           /* cap on the LPs of the sequence (100) */
+} bl_seqlp_options;
+
+void bl_seqlp_options_default(bl_seqlp_options *o);
+
+/* As bl_assoc_solve; the solution's alpha is the certified non-associative
+ * multiplier, alpha_assoc the associative one, and status BL_UNCERTIFIED
+ * when the cap came first. */
+int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl_error *err);
+
+#endif

@@ -1,0 +1,44 @@
+-- Non-associative friction by the sequence of LPs with a certificate
+-- (the seed's section 4).  Published values: W4 0.26374 (the seed and Ferris &
+-- Tin-Loi agree), W5 between 0.20863 (Ferris & Tin-Loi) and 0.21964 (the
+-- seed); closed forms for a block and a column, where no dilatancy changes
+-- nothing: min(mu, b/h).
+package.path = (arg[0]:match("(.*/)") or "./") .. "?.lua;" .. package.path
+local T = require "tap"
+local walls = require "walls"
+
+local function nonassoc(name, courses)
+  model { name = name, mu = 0.65 }
+  wall { courses = courses, unit = { 0.4, 0.175 } }
+  return solve { flow = "nonassociative" }
+end
+
+local r = nonassoc("W4", walls.W4)
+T.eq(r.method, "seqlp", "W4: method seqlp")
+T.near(r.alpha, 0.26374, 0.00005 / 0.26374, "W4: alpha = 0.26374 +- 0.00005")
+T.ok(r.certified, "W4: certified")
+T.ok(r.verified, "W4: verified (Eq. 12 residuals)")
+T.near(r.alpha_assoc, 0.33195, 0.5e-5 / 0.33195, "W4: associative 0.33195 in the same result")
+T.ok(#r.history >= 2 and r.history[1] == r.alpha_assoc, "W4: the history starts at the associative alpha")
+
+r = nonassoc("W5", walls.W5)
+T.ok(r.alpha >= 0.2086 and r.alpha <= 0.2197, "W5: alpha in [0.2086, 0.2197]",
+     ("got %.6f"):format(r.alpha))
+T.ok(r.certified and r.verified, "W5: certified and verified")
+T.ok(r.alpha <= r.alpha_assoc * (1 + 1e-9), "W5: not above the associative alpha")
+
+for _, case in ipairs { { 0.5, 1, 0.3 }, { 0.5, 1, 0.8 }, { 0.4, 0.3, 0.5 } } do
+  local b, h, mu = case[1], case[2], case[3]
+  for _, k in ipairs { 1, 3 } do
+    model { mu = mu }
+    for i = 0, k - 1 do
+      block { vertices = { { 0, i * h }, { b, i * h }, { b, (i + 1) * h }, { 0, (i + 1) * h } } }
+    end
+    block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+    r = solve { flow = "nonassociative" }
+    T.near(r.alpha, math.min(mu, b / (k * h)), 1e-7,
+           ("%d block(s) b = %g, h = %g, mu = %g: alpha = min(mu, b/H)"):format(k, b, h, mu))
+    T.ok(r.certified, ("%d block(s), mu = %g: certified"):format(k, mu))
+  end
+end
+T.done()
