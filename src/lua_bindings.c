@@ -93,6 +93,14 @@ static int field(lua_State *L, int idx, const char *f)
     return 1;
 }
 
+/* 1 when field f of table idx is present (not nil). */
+static int field_given(lua_State *L, int idx, const char *f)
+{
+    int given = lua_getfield(L, idx, f) != LUA_TNIL;
+    lua_pop(L, 1);
+    return given;
+}
+
 enum { ANY = 0, NONNEG = 1, POSITIVE = 2 };
 
 /* Reads number field f, or returns def when absent. */
@@ -532,10 +540,16 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         lua_pushinteger(L, s->lps);
         lua_setfield(L, -2, "lps");
         set_number(L, "slip", s->slip);
-        lua_createtable(L, s->nhistory, 0);
-        for (int i = 0; i < s->nhistory; i++) {
-            lua_pushnumber(L, s->history[i]);
-            lua_rawseti(L, -2, i + 1);
+        /* history[k] = the alphas of start k, from the alpha it began at */
+        lua_createtable(L, s->nstarts, 0);
+        for (int k = 0; k < s->nstarts; k++) {
+            int end = k + 1 < s->nstarts ? s->start[k + 1] : s->nhistory;
+            lua_createtable(L, end - s->start[k], 0);
+            for (int i = s->start[k]; i < end; i++) {
+                lua_pushnumber(L, s->history[i]);
+                lua_rawseti(L, -2, i - s->start[k] + 1);
+            }
+            lua_rawseti(L, -2, k + 1);
         }
         lua_setfield(L, -2, "history");
     }
@@ -659,7 +673,7 @@ static int model_solve(lua_State *L)
     static const char *const fields[] = {"flow",       "method",     "lp",      "tolerance",
                                          "time_limit", "iterations", "verbose", "mps",
                                          "beta",       "settle",     "slip",    "lps",
-                                         NULL};
+                                         "starts",     "seed",       NULL};
     static const char *const flows[] = {"associative", "nonassociative", NULL};
     static const char *const methods[] = {"assoc", "seqlp", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
@@ -681,6 +695,16 @@ static int model_solve(lua_State *L)
     if (cap != floor(cap) || cap < 2 || cap > 1e6)
         fail(L, "solve: field 'lps' must be an integer of at least 2, got %g", cap);
     so.max_lps = (int)cap;
+    double starts = number_field(L, 2, "solve", "starts", 0, NONNEG);
+    if (starts != floor(starts) || starts > 1e6)
+        fail(L, "solve: field 'starts' must be a non-negative integer, got %g", starts);
+    so.starts = (int)starts;
+    double seed = number_field(L, 2, "solve", "seed", 1, NONNEG);
+    if (seed != floor(seed) || seed > 9e15)
+        fail(L, "solve: field 'seed' must be a non-negative integer, got %g", seed);
+    so.seed = (unsigned long long)seed;
+    if ((so.starts || field_given(L, 2, "seed")) && !method)
+        fail(L, "solve: fields 'starts' and 'seed' go with flow = \"nonassociative\"");
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;
     bl_solve_options_default(&o);

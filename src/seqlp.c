@@ -16,13 +16,17 @@ void bl_seqlp_options_default(bl_seqlp_options *o)
     o->settle = 1e-4;
     o->slip = 1e-4;
     o->max_lps = 100;
+    o->starts = 0;
+    o->seed = 1;
 }
 
 /* The state of one run, with everything it owns. */
 typedef struct run {
     bl_system *cone, *fixed;
     bl_lp *lp_fixed, *lp_cone;
-    double *n, *lo, *hi, *clo, *chi, *w, *dn, *dt;
+    double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt;
+    int found;             /* a certified answer is kept in best_* */
+    double best_alpha, *best_x, *best_y;
 } run;
 
 static void run_free(run *r)
@@ -39,6 +43,9 @@ static void run_free(run *r)
     free(r->w);
     free(r->dn);
     free(r->dt);
+    free(r->obj);
+    free(r->best_x);
+    free(r->best_y);
 }
 
 static bl_lp *make_lp(const bl_system *s, const double *lo, const double *hi,
@@ -95,7 +102,20 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
     } else {
         bl_lp_set_bounds(r->lp_cone, r->clo, r->chi);
     }
-    return bl_lp_solve(r->lp_cone);
+    bl_lp_status st = bl_lp_solve(r->lp_cone);
+    if ((st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) &&
+        strcmp(bl_lp_engine(r->lp_cone), "ipm") == 0) {
+        /* At the settled alpha the certificate's feasible set can be a
+         * single point, which an interior point approaches without
+         * converging (met on a stack-bond wall): the simplex decides it. */
+        bl_solve_options so = *o;
+        so.lp = BL_LP_SIMPLEX;
+        bl_lp_free(r->lp_cone);
+        r->lp_cone = make_lp(c, r->clo, r->chi, &so, err);
+        if (!r->lp_cone) return BL_LP_FAILED;
+        st = bl_lp_solve(r->lp_cone);
+    }
+    return st;
 }
 
 static int append(bl_solution *s, double a)
@@ -105,6 +125,126 @@ static int append(bl_solution *s, double a)
     h[s->nhistory++] = a;
     s->history = h;
     return 0;
+}
+
+/* Opens the history of a new start, whose first entry is the alpha it
+ * starts from. */
+static int start_history(bl_solution *s, double from)
+{
+    int *st = realloc(s->start, (size_t)(s->nstarts + 1) * sizeof *st);
+    if (!st) return -1;
+    s->start = st;
+    st[s->nstarts++] = s->nhistory;
+    return append(s, from);
+}
+
+
+/* One start: LPs with fixed shear capacities from the normal forces r->n
+ * until alpha settles and a certificate is found (returns 1, and keeps the
+ * answer in r->best when it is the lowest yet), the cap is reached or an LP
+ * fails (0, with *stop set for a failure that should end the whole run), or
+ * an error (-1). */
+static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double prev,
+                     bl_lp_status *stop, bl_error *err)
+{
+    const bl_system *f = r->fixed;
+    *stop = BL_LP_OPTIMAL;
+    for (int j = 0; j < o->max_lps; j++) {
+        bl_system_fixed_bounds(f, r->n, r->lo, r->hi);
+        if (!r->lp_fixed) {
+            r->lp_fixed = make_lp(f, r->lo, r->hi, &o->base, err);
+            if (!r->lp_fixed) return -1;
+        } else {
+            bl_lp_set_bounds(r->lp_fixed, r->lo, r->hi);
+        }
+        bl_lp_status st = bl_lp_solve(r->lp_fixed);
+        s->lps++;
+        s->iterations += bl_lp_iterations(r->lp_fixed);
+        if (st != BL_LP_OPTIMAL) {
+            /* Infeasible: the relaxed normal forces cannot carry some block
+             * by friction alone (DESIGN 2.4); this start ends uncertified. */
+            if (st != BL_LP_INFEASIBLE) *stop = st;
+            return 0;
+        }
+        const double *x = bl_lp_primal(r->lp_fixed), *y = bl_lp_dual(r->lp_fixed);
+        double a = x[f->nforce];
+        if (append(s, a)) return bl_error_set(err, "solve: out of memory");
+        if (o->base.verbose)
+            fprintf(stderr, "seqlp start %d LP %d: alpha %.8g\n", s->nstarts, j + 1, a);
+        if (fabs(a - prev) <= o->settle * fabs(a)) {
+            bl_lp_status cs = certify(r, a, y, o->slip, &o->base, err);
+            s->lps++;
+            if (cs == BL_LP_FAILED && !r->lp_cone) return -1;
+            if (cs == BL_LP_OPTIMAL) {
+                if (!r->found || a < r->best_alpha) {
+                    r->found = 1;
+                    r->best_alpha = a;
+                    memcpy(r->best_x, bl_lp_primal(r->lp_cone),
+                           (size_t)r->cone->ncols * sizeof *r->best_x);
+                    memcpy(r->best_y, y, (size_t)f->nrows * sizeof *r->best_y);
+                }
+                return 1;
+            }
+            if (cs != BL_LP_INFEASIBLE) {
+                *stop = cs;
+                return 0;
+            }
+        }
+        /* relax the normal forces towards this LP's */
+        for (int p = 0; p < f->npoints; p++) r->n[p] *= 1.0 - o->beta;
+        for (int k = 0; k < f->nforce; k++)
+            if (f->col_kind[k] == BL_COL_NORMAL) r->n[f->col_point[k]] += o->beta * x[k];
+        prev = a;
+    }
+    return 0;
+}
+
+/* splitmix64: a small, well-mixed generator; the same seed gives the same
+ * starts on every machine. */
+static double uniform(unsigned long long *state)
+{
+    unsigned long long z = (*state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    z ^= z >> 31;
+    return (double)(z >> 11) * 0x1.0p-53;
+}
+
+/* Another admissible stress state (the seed's Eq. 22): maximize a random
+ * c . x, c uniform in [0, 1), over equilibrium and the Coulomb cone with
+ * alpha fixed; its normal forces seed the next start.  The seed draws these
+ * states at the current alpha; the caller draws alpha uniformly below the
+ * best so far instead, because on a stack-bond wall (3 columns of 12
+ * blocks, mu = 5) states at the best alpha, 0.5714, never led elsewhere,
+ * while states below it led to certified answers down to 0.2078 in 20
+ * starts.  Returns the LP status. */
+static bl_lp_status random_state(run *r, double alpha, unsigned long long *rng,
+                                 const bl_seqlp_options *o, bl_error *err)
+{
+    const bl_system *c = r->cone;
+    for (int j = 0; j < c->nforce; j++) {
+        r->clo[j] = c->lo[j];
+        r->chi[j] = c->hi[j];
+        r->obj[j] = uniform(rng);
+    }
+    r->clo[c->nforce] = r->chi[c->nforce] = alpha;
+    r->obj[c->nforce] = 0.0;
+    bl_lp_settings ls;
+    bl_lp_settings_default(&ls);
+    ls.engine = o->base.lp;
+    ls.max_seconds = o->base.time_limit;
+    bl_lp_problem p = {c->nrows, c->ncols, c->colptr, c->rowind, c->val,
+                       r->clo,   r->chi,   c->rhs,    r->obj};
+    bl_lp *lp = bl_lp_create(&p, &ls, err);
+    if (!lp) return BL_LP_FAILED;
+    bl_lp_status st = bl_lp_solve(lp);
+    if (st == BL_LP_OPTIMAL) {
+        const double *x = bl_lp_primal(lp);
+        for (int q = 0; q < c->npoints; q++) r->n[q] = 0.0;
+        for (int j = 0; j < c->nforce; j++) r->n[c->col_point[j]] += x[j] * c->col_nt[2 * j];
+    }
+    bl_lp_free(lp);
+    return st;
 }
 
 int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl_error *err)
@@ -123,7 +263,6 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         *out = s; /* no associative answer: none without dilatancy either */
         return 0;
     }
-    append(s, s->alpha);
 
     run r = {0};
     const bl_model *mc = s->model;
@@ -138,65 +277,53 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.hi = malloc((size_t)nc * sizeof *r.hi);
     r.clo = malloc((size_t)ncc * sizeof *r.clo);
     r.chi = malloc((size_t)ncc * sizeof *r.chi);
+    r.obj = malloc((size_t)ncc * sizeof *r.obj);
     r.w = malloc((size_t)(nc > ncc ? nc : ncc) * sizeof *r.w);
-    if (!r.n || !r.dn || !r.dt || !r.lo || !r.hi || !r.clo || !r.chi || !r.w) {
+    r.best_x = malloc((size_t)ncc * sizeof *r.best_x);
+    r.best_y = malloc((size_t)r.fixed->nrows * sizeof *r.best_y);
+    if (!r.n || !r.dn || !r.dt || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
+        !r.best_x || !r.best_y) {
         bl_error_set(err, "solve: out of memory");
         goto fail;
     }
-    /* normal forces of the associative answer, per point, scaled */
-    for (int p = 0; p < np; p++) r.n[p] = s->force[2 * p] / r.fixed->W0;
 
-    double prev = s->alpha;
-    s->status = BL_UNCERTIFIED;
-    for (int j = 1; j < o->max_lps; j++) {
-        bl_system_fixed_bounds(r.fixed, r.n, r.lo, r.hi);
-        if (!r.lp_fixed) {
-            r.lp_fixed = make_lp(r.fixed, r.lo, r.hi, &o->base, err);
-            if (!r.lp_fixed) goto fail;
+    /* Start 0 from the associative normal forces; then starts from random
+     * admissible stress states below the best alpha so far. */
+    unsigned long long rng = o->seed;
+    bl_lp_status stop = BL_LP_OPTIMAL;
+    for (int k = 0; k <= o->starts && stop == BL_LP_OPTIMAL; k++) {
+        double from = r.found ? r.best_alpha : s->alpha_assoc;
+        if (k == 0) {
+            for (int p = 0; p < np; p++) r.n[p] = s->force[2 * p] / r.fixed->W0;
         } else {
-            bl_lp_set_bounds(r.lp_fixed, r.lo, r.hi);
-        }
-        bl_lp_status st = bl_lp_solve(r.lp_fixed);
-        s->lps++;
-        s->iterations += bl_lp_iterations(r.lp_fixed);
-        if (st != BL_LP_OPTIMAL) {
-            /* an infeasible LP here means the relaxed normal forces cannot
-             * carry some block by friction alone (DESIGN 2.4) */
-            s->status = st == BL_LP_INFEASIBLE ? BL_UNCERTIFIED : bl_status_of_lp(st);
-            break;
-        }
-        const double *x = bl_lp_primal(r.lp_fixed), *y = bl_lp_dual(r.lp_fixed);
-        double a = x[r.fixed->nforce];
-        append(s, a);
-        if (o->base.verbose) fprintf(stderr, "seqlp LP %d: alpha %.8g\n", j + 1, a);
-        if (fabs(a - prev) <= o->settle * fabs(a)) {
-            bl_lp_status cs = certify(&r, a, y, o->slip, &o->base, err);
+            bl_lp_status st = random_state(&r, uniform(&rng) * from, &rng, o, err);
             s->lps++;
-            if (cs == BL_LP_FAILED && !r.lp_cone) goto fail;
-            if (cs == BL_LP_OPTIMAL) {
-                const double *xc = bl_lp_primal(r.lp_cone);
-                s->alpha = a;
-                s->status = a < 0.0 ? BL_UNSTABLE : BL_OPTIMAL;
-                s->certified = 1;
-                bl_system_forces(r.cone, mc, xc, s->force);
-                bl_system_mechanism(r.fixed, mc, y, s->u);
-                bl_solution_classify(s);
-                s->verified = bl_verify_nonassoc(r.cone, r.fixed, a, xc, y, o->base.tolerance,
-                                                 o->slip, &s->res);
-                break;
-            }
-            if (cs != BL_LP_INFEASIBLE) {
-                s->status = bl_status_of_lp(cs);
-                break;
+            if (st == BL_LP_FAILED) goto fail;
+            if (st != BL_LP_OPTIMAL) {
+                stop = st == BL_LP_INFEASIBLE ? BL_LP_OPTIMAL : st;
+                continue;
             }
         }
-        /* relax the normal forces towards this LP's */
-        for (int p = 0; p < np; p++) r.n[p] *= 1.0 - o->beta;
-        for (int k = 0; k < r.fixed->nforce; k++)
-            if (r.fixed->col_kind[k] == BL_COL_NORMAL) r.n[r.fixed->col_point[k]] += o->beta * x[k];
-        prev = a;
+        if (start_history(s, from)) {
+            bl_error_set(err, "solve: out of memory");
+            goto fail;
+        }
+        if (one_start(&r, o, s, from, &stop, err) < 0) goto fail;
     }
-    if (!s->certified) {
+
+    if (r.found) {
+        s->alpha = r.best_alpha;
+        s->status = s->alpha < 0.0 ? BL_UNSTABLE : BL_OPTIMAL;
+        s->certified = 1;
+        bl_system_forces(r.cone, mc, r.best_x, s->force);
+        bl_system_mechanism(r.fixed, mc, r.best_y, s->u);
+        bl_solution_classify(s);
+        double tv = bl_clock();
+        s->verified = bl_verify_nonassoc(r.cone, r.fixed, s->alpha, r.best_x, r.best_y,
+                                         o->base.tolerance, o->slip, &s->res);
+        s->time.verification += bl_clock() - tv;
+    } else {
+        s->status = stop != BL_LP_OPTIMAL ? bl_status_of_lp(stop) : BL_UNCERTIFIED;
         s->has_mechanism = 0;
         s->alpha = s->history[s->nhistory - 1];
     }

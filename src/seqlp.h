@@ -16,7 +16,9 @@ typedef struct bl_seqlp_options {
     double beta;           /* relaxation of the normal forces (0.7) */
     double settle;         /* |d alpha| <= settle alpha starts a certificate (1e-4) */
     double slip;           /* motions below slip x the largest count as zero (1e-4) */
-    int max_lps;           /* cap on the LPs of the sequence (100) */
+    int max_lps;           /* cap on the LPs of one start (100) */
+    int starts;            /* further starts from random stress states (Eq. 22) */
+    unsigned long long seed; /* of those random states */
 } bl_seqlp_options;
 
 void bl_seqlp_options_default(bl_seqlp_options *o);

@@ -82,6 +82,7 @@ void bl_solution_free(bl_solution *s)
     free(s->state);
     free(s->hinge);
     free(s->history);
+    free(s->start);
     free(s);
 }
 

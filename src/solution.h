@@ -80,6 +80,8 @@ typedef struct bl_solution {
     int lps;                 /* LPs solved (all kinds) */
     int nhistory;
     double *history;         /* alpha of each LP of the sequence, owned */
+    int nstarts;
+    int *start;              /* where each start's history begins, owned */
 } bl_solution;
 
 /* A solution for the model copy c (taken over: freed with the solution, or
