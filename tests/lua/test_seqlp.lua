@@ -61,6 +61,31 @@ T.ok(r.alpha <= 0.1905 and r.certified and r.verified, "stack bond, 10 starts: a
 T.eq(#r.history, 11, "stack bond: the history of every start is kept")
 T.eq(stack(10, 1).alpha, r.alpha, "stack bond: the same seed gives the same answer")
 
+-- Hard cases.  W4 at mu = 0.01 slides at alpha = mu; at mu = 100 it rocks
+-- and the associative answer stands; W1 at mu = 5 overturns as one body
+-- about its toe, b/h = 2/1.05 = 1.90476: a rocking mechanism needs no
+-- dilatancy, so both flows agree.
+for _, mu in ipairs { 0.01, 100 } do
+  model { mu = mu }
+  wall { courses = walls.W4, unit = { 0.4, 0.175 } }
+  local a = solve { flow = "nonassociative" }
+  T.ok(a.certified and a.verified and a.alpha <= a.alpha_assoc * (1 + 1e-9),
+       ("W4, mu = %g: certified, alpha %.5f <= associative %.5f"):format(mu, a.alpha, a.alpha_assoc))
+end
+model { mu = 5 }
+wall { courses = walls.W1, unit = { 0.4, 0.175 } }
+r = solve { flow = "nonassociative" }
+T.near(r.alpha, 2 / 1.05, 1e-7, "W1, mu = 5: the wall overturns whole, alpha = 1.90476 in both flows")
+T.near(r.alpha_assoc, 2 / 1.05, 1e-7, "W1, mu = 5: associative alpha = 1.90476")
+-- A block over an opening with no lintel, held by head-joint friction only:
+-- the sequence does not certify it (DESIGN 2.4's hard case); it must say so
+-- and claim no answer.
+model { mu = 0.65 }
+wall { courses = { { 1, 1, 1 }, { 1, -1, 1 }, { 1, -1, 1 }, { 1, 1, 1 } }, unit = { 0.4, 0.175 } }
+r = solve { flow = "nonassociative" }
+T.ok(r.status == "not certified" and not r.certified and not r.verified and r.residuals == nil,
+     "no lintel: status not certified, no answer claimed", r.status)
+
 -- Walls with random openings: never above the associative answer, always
 -- certified, reproducible.
 for _, seed in ipairs { 2, 3, 5 } do
