@@ -1,5 +1,6 @@
 -- bench.lua ENGINE N [TIME_LIMIT]: one benchmark run with the LP engine
--- ENGINE ("ipm", "simplex" or "auto"), a running-bond wall of N full
+-- ENGINE ("ipm", "simplex" or "auto"; "seqlp": the non-associative solve,
+-- one start, engine auto), a running-bond wall of N full
 -- blocks per course and N courses, the half-block course first (N = 32, 50,
 -- 100 give 1,040, 2,525 and 10,050 blocks), mu = 0.65, horizontal load
 -- proportional to weight.  Prints one line of key=value pairs.
@@ -15,12 +16,13 @@ local courses = {}
 for c = 1, n do courses[c] = c % 2 == 1 and E or U end
 wall { courses = courses, unit = { 0.4, 0.175 } }
 local t1 = clock()
-local r = solve { lp = engine, time_limit = limit }
+local r = engine == "seqlp" and solve { flow = "nonassociative", time_limit = limit }
+  or solve { lp = engine, time_limit = limit }
 local t = r.timings
-print(("n=%d blocks=%d interfaces=%d rows=%d columns=%d lp=%s iterations=%d factor_nnz=%.0f status=%s "
+print(("method=%s n=%d blocks=%d interfaces=%d rows=%d columns=%d lp=%s lps=%d iterations=%d factor_nnz=%.0f status=%s "
   .. "alpha=%.8g verified=%s generate=%.3f detection=%.3f assembly=%.3f solve=%.3f "
   .. "verification=%.3f total=%.3f")
-  :format(n, r.size.blocks, r.size.interfaces, r.size.rows, r.size.columns, r.lp, r.iterations,
+  :format(r.method, n, r.size.blocks, r.size.interfaces, r.size.rows, r.size.columns, r.lp, r.lps or 1, r.iterations,
           r.size.factor_nnz,
           r.status:gsub(" ", "_"), r.alpha, tostring(r.verified), t1 - t0, t.detection,
           t.assembly, t.solve, t.verification, t1 - t0 + t.total))
