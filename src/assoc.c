@@ -18,6 +18,20 @@ void bl_solve_options_default(bl_solve_options *o)
     o->mps = NULL;
 }
 
+bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const double *obj,
+                   const bl_solve_options *o, bl_error *err)
+{
+    bl_lp_settings ls;
+    bl_lp_settings_default(&ls);
+    ls.engine = o->lp;
+    ls.verbose = o->verbose;
+    ls.max_seconds = o->time_limit;
+    ls.max_iterations = o->iterations;
+    bl_lp_problem p = {s->nrows, s->ncols, s->colptr, s->rowind, s->val,
+                       lo,       hi,       s->rhs,    obj ? obj : s->obj};
+    return bl_lp_create(&p, &ls, err);
+}
+
 int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl_error *err)
 {
     bl_interrupt_clear();
@@ -33,15 +47,11 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         bl_solution_free(s);
         return -1;
     }
-    bl_lp_settings ls;
-    bl_lp_settings_default(&ls);
-    ls.verbose = o->verbose;
-    ls.max_seconds = o->time_limit;
-    ls.max_iterations = o->iterations;
-    ls.engine = o->lp;
     bl_lp_problem p = {sys->nrows, sys->ncols, sys->colptr, sys->rowind, sys->val,
                        sys->lo,    sys->hi,    sys->rhs,    sys->obj};
-    bl_lp *lp = o->mps && bl_lp_write_mps(&p, o->mps, err) ? NULL : bl_lp_create(&p, &ls, err);
+    bl_lp *lp = o->mps && bl_lp_write_mps(&p, o->mps, err)
+                    ? NULL
+                    : bl_solve_lp(sys, sys->lo, sys->hi, NULL, o, err);
     if (!lp) {
         bl_system_free(sys);
         bl_solution_free(s);

@@ -21,6 +21,13 @@ typedef struct bl_solve_options {
 
 void bl_solve_options_default(bl_solve_options *o);
 
+/* An LP of the system s (assemble.h) with the given bounds and objective
+ * (NULL: the system's own), on the engine and limits of o.  NULL with err
+ * set on failure. */
+struct bl_system;
+bl_lp *bl_solve_lp(const struct bl_system *s, const double *lo, const double *hi,
+                   const double *obj, const bl_solve_options *o, bl_error *err);
+
 /* Detects interfaces when needed (which may fail: err says why), assembles,
  * solves and verifies.  On success *out is a new solution whose status may
  * be any bl_status: an infeasible model is an answer, not an error. */

@@ -48,19 +48,6 @@ static void run_free(run *r)
     free(r->best_y);
 }
 
-static bl_lp *make_lp(const bl_system *s, const double *lo, const double *hi,
-                      const bl_solve_options *o, bl_error *err)
-{
-    bl_lp_settings ls;
-    bl_lp_settings_default(&ls);
-    ls.engine = o->lp;
-    ls.verbose = o->verbose;
-    ls.max_seconds = o->time_limit;
-    ls.max_iterations = o->iterations;
-    bl_lp_problem p = {s->nrows, s->ncols, s->colptr, s->rowind, s->val, lo, hi, s->rhs, s->obj};
-    return bl_lp_create(&p, &ls, err);
-}
-
 /* The certificate: at alpha, forces in Coulomb's cone that fit the
  * mechanism y of the last LP: none where a point opens, on the cone's edge
  * against the slip where it slides, anywhere in the cone where it stays
@@ -97,7 +84,7 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
     }
     r->clo[c->nforce] = r->chi[c->nforce] = alpha;
     if (!r->lp_cone) {
-        r->lp_cone = make_lp(c, r->clo, r->chi, o, err);
+        r->lp_cone = bl_solve_lp(c, r->clo, r->chi, NULL, o, err);
         if (!r->lp_cone) return BL_LP_FAILED;
     } else {
         bl_lp_set_bounds(r->lp_cone, r->clo, r->chi);
@@ -111,7 +98,7 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
         bl_solve_options so = *o;
         so.lp = BL_LP_SIMPLEX;
         bl_lp_free(r->lp_cone);
-        r->lp_cone = make_lp(c, r->clo, r->chi, &so, err);
+        r->lp_cone = bl_solve_lp(c, r->clo, r->chi, NULL, &so, err);
         if (!r->lp_cone) return BL_LP_FAILED;
         st = bl_lp_solve(r->lp_cone);
     }
@@ -152,7 +139,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
     for (int j = 0; j < o->max_lps; j++) {
         bl_system_fixed_bounds(f, r->n, r->lo, r->hi);
         if (!r->lp_fixed) {
-            r->lp_fixed = make_lp(f, r->lo, r->hi, &o->base, err);
+            r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
             if (!r->lp_fixed) return -1;
         } else {
             bl_lp_set_bounds(r->lp_fixed, r->lo, r->hi);
@@ -229,13 +216,7 @@ static bl_lp_status random_state(run *r, double alpha, unsigned long long *rng,
     }
     r->clo[c->nforce] = r->chi[c->nforce] = alpha;
     r->obj[c->nforce] = 0.0;
-    bl_lp_settings ls;
-    bl_lp_settings_default(&ls);
-    ls.engine = o->base.lp;
-    ls.max_seconds = o->base.time_limit;
-    bl_lp_problem p = {c->nrows, c->ncols, c->colptr, c->rowind, c->val,
-                       r->clo,   r->chi,   c->rhs,    r->obj};
-    bl_lp *lp = bl_lp_create(&p, &ls, err);
+    bl_lp *lp = bl_solve_lp(c, r->clo, r->chi, r->obj, &o->base, err);
     if (!lp) return BL_LP_FAILED;
     bl_lp_status st = bl_lp_solve(lp);
     if (st == BL_LP_OPTIMAL) {

@@ -3,6 +3,20 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* Normalization and the virtual-work balance: the static alpha equals the
+ * kinematic one, (dissipation - fD . u) / fL . u. */
+static void work(const bl_system *s, double alpha, const double *y, double dissipation,
+                 bl_residuals *res)
+{
+    double fLu = 0.0, fDu = 0.0;
+    for (int j = s->colptr[s->nforce]; j < s->colptr[s->nforce + 1]; j++)
+        fLu += s->val[j] * y[s->rowind[j]];
+    for (int i = 0; i < s->nrows; i++) fDu -= s->rhs[i] * y[i];
+    double scale = fabs(alpha * fLu) + fabs(fDu) + fabs(dissipation);
+    res->normalization = fabs(fLu - 1.0);
+    res->work = scale > 0.0 ? fabs(alpha * fLu + fDu - dissipation) / scale : 0.0;
+}
+
 int bl_verify(const bl_system *s, double alpha, const double *x, const double *y, double tol,
               bl_residuals *res)
 {
@@ -49,19 +63,11 @@ int bl_verify(const bl_system *s, double alpha, const double *x, const double *y
         }
     }
 
-    /* Normalization and the virtual-work balance: the static alpha equals
-     * the kinematic one, (dissipation - fD . u) / fL . u. */
-    double fLu = 0.0, fDu = 0.0;
-    for (int j = s->colptr[s->nforce]; j < s->colptr[s->nforce + 1]; j++)
-        fLu += s->val[j] * y[s->rowind[j]];
-    for (int i = 0; i < s->nrows; i++) fDu -= s->rhs[i] * y[i];
-    double scale = fabs(alpha * fLu) + fabs(fDu) + fabs(dissipation);
     res->equilibrium = eq;
     res->yield = fmax(yield, 0.0);
     res->admissibility = fmax(adm, 0.0);
     res->complementarity = comp;
-    res->normalization = fabs(fLu - 1.0);
-    res->work = scale > 0.0 ? fabs(alpha * fLu + fDu - dissipation) / scale : 0.0;
+    work(s, alpha, y, dissipation, res);
     free(r);
     return res->equilibrium <= tol && res->yield <= tol && res->admissibility <= tol &&
            res->complementarity <= tol && res->normalization <= tol && res->work <= tol;
@@ -130,17 +136,11 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         }
         if (fabs(dt[p]) > slip * V && n[p] > slip * X) dil = fmax(dil, dn[p] / V);
     }
-    double fLu = 0.0, fDu = 0.0;
-    for (int j = cone->colptr[cone->nforce]; j < cone->colptr[cone->nforce + 1]; j++)
-        fLu += cone->val[j] * y[cone->rowind[j]];
-    for (int i = 0; i < cone->nrows; i++) fDu -= cone->rhs[i] * y[i];
-    double scale = fabs(alpha * fLu) + fabs(fDu) + dissipation;
     res->equilibrium = eq;
     res->yield = fmax(yield, 0.0);
     res->admissibility = fmax(adm, 0.0);
     res->complementarity = comp;
-    res->normalization = fabs(fLu - 1.0);
-    res->work = scale > 0.0 ? fabs(alpha * fLu + fDu - dissipation) / scale : 0.0;
+    work(cone, alpha, y, dissipation, res);
     res->flow = flow;
     res->dilatancy = dil;
     free(w);
