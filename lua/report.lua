@@ -25,6 +25,10 @@ function Result.__tostring(r)
   if r.alpha_assoc then
     say("  associative alpha = %.6g; %d LPs in the sequence%s", r.alpha_assoc, r.lps,
         r.certified and ", the last one its certificate" or "")
+    if r.assoc_is_solution then
+      say("  (with unlimited friction alpha is the same: the associative answer is itself a")
+      say("  non-associative solution; starts = K looks for lower ones)")
+    end
   end
   say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
       r.lp, r.iterations, size.rows, size.columns)

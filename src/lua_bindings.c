@@ -535,6 +535,9 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     lua_setfield(L, -2, "flow");
     if (strcmp(s->method, "seqlp") == 0) {
         set_number(L, "alpha_assoc", s->alpha_assoc);
+        set_number(L, "alpha_rigid", s->alpha_rigid);
+        lua_pushboolean(L, s->assoc_is_solution);
+        lua_setfield(L, -2, "assoc_is_solution");
         lua_pushboolean(L, s->certified);
         lua_setfield(L, -2, "certified");
         lua_pushinteger(L, s->lps);

@@ -228,6 +228,20 @@ static bl_lp_status random_state(run *r, double alpha, unsigned long long *rng,
     return st;
 }
 
+/* The cone system of the model with every joint rigid against sliding. */
+static bl_system *rigid_system(const bl_model *m, bl_error *err)
+{
+    bl_model *c = bl_model_copy(m);
+    if (!c) {
+        bl_error_set(err, "solve: out of memory");
+        return NULL;
+    }
+    for (int k = 0; k < c->ninterfaces; k++) c->interfaces[k].mu = INFINITY;
+    bl_system *s = bl_system_build(c, BL_FRICTION_CONE, err);
+    bl_model_free(c);
+    return s;
+}
+
 int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl_error *err)
 {
     double t0 = bl_clock();
@@ -243,6 +257,13 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     if (s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) {
         *out = s; /* no associative answer: none without dilatancy either */
         return 0;
+    }
+    /* Only joints with finite, non-zero friction dilate: without any, the
+     * associative answer is the non-associative one, with no sequence. */
+    int sliding = 0;
+    for (int k = 0; k < s->model->ninterfaces; k++) {
+        double mu = s->model->interfaces[k].mu;
+        sliding |= isfinite(mu) && mu > 0.0;
     }
 
     run r = {0};
@@ -268,11 +289,34 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         goto fail;
     }
 
+    /* One LP with unlimited friction: when its alpha equals the associative
+     * one, no joint's friction limits the collapse, and the associative
+     * answer is itself a non-associative solution (a lower one may exist,
+     * so the search goes on). */
+    if (sliding) {
+        bl_system *rigid = rigid_system(mc, err);
+        if (!rigid) goto fail;
+        bl_lp *lp = bl_solve_lp(rigid, rigid->lo, rigid->hi, NULL, &o->base, err);
+        bl_lp_status st = lp ? bl_lp_solve(lp) : BL_LP_FAILED;
+        s->lps++;
+        s->alpha_rigid = st == BL_LP_OPTIMAL ? bl_lp_primal(lp)[rigid->nforce]
+                         : st == BL_LP_UNBOUNDED ? INFINITY : NAN;
+        s->assoc_is_solution = fabs(s->alpha_rigid - s->alpha_assoc) <=
+                               1e-7 * fmax(1.0, fabs(s->alpha_assoc));
+        bl_lp_free(lp);
+        bl_system_free(rigid);
+    } else {
+        s->alpha_rigid = s->alpha_assoc;
+        s->assoc_is_solution = 1;
+    }
+
     /* Start 0 from the associative normal forces; then starts from random
      * admissible stress states below the best alpha so far. */
     unsigned long long rng = o->seed;
     bl_lp_status stop = BL_LP_OPTIMAL;
-    for (int k = 0; k <= o->starts && stop == BL_LP_OPTIMAL; k++) {
+    /* without sliding joints the first LP settles and certifies at once */
+    int starts = sliding ? o->starts : 0;
+    for (int k = 0; k <= starts && stop == BL_LP_OPTIMAL; k++) {
         double from = r.found ? r.best_alpha : s->alpha_assoc;
         if (k == 0) {
             for (int p = 0; p < np; p++) r.n[p] = s->force[2 * p] / r.fixed->W0;

@@ -75,6 +75,8 @@ typedef struct bl_solution {
     const char *method;      /* "assoc" or "seqlp", static */
     const char *flow;        /* "associative" or "nonassociative", static */
     double alpha_assoc;      /* the associative multiplier */
+    double alpha_rigid;      /* ... with unlimited friction (INFINITY: unbounded) */
+    int assoc_is_solution;   /* alpha_assoc = alpha_rigid: friction limits nothing */
     int certified;           /* a certificate LP accepted (alpha, x, u) */
     double slip;             /* the slip threshold used, relative */
     int lps;                 /* LPs solved (all kinds) */

@@ -19,6 +19,8 @@ T.near(r.alpha, 0.26374, 0.00005 / 0.26374, "W4: alpha = 0.26374 +- 0.00005")
 T.ok(r.certified, "W4: certified")
 T.ok(r.verified, "W4: verified (Eq. 12 residuals)")
 T.near(r.alpha_assoc, 0.33195, 0.5e-5 / 0.33195, "W4: associative 0.33195 in the same result")
+T.ok(not r.assoc_is_solution and r.alpha_rigid > r.alpha_assoc,
+     "W4: friction limits the associative answer (unlimited friction gives more)")
 T.ok(#r.history == 1 and r.history[1][1] == r.alpha_assoc,
      "W4: one start, its history beginning at the associative alpha")
 
@@ -55,6 +57,8 @@ local function stack(starts, seed)
 end
 r = stack(0)
 T.near(r.alpha, 0.4 * 3 / 2.1, 1e-7, "stack bond, one start: the associative 0.57143 certified")
+T.ok(r.assoc_is_solution and math.abs(r.alpha_rigid - r.alpha_assoc) <= 1e-9,
+     "stack bond: unlimited friction gives the associative alpha, reported")
 r = stack(10, 1)
 T.ok(r.alpha <= 0.1905 and r.certified and r.verified, "stack bond, 10 starts: alpha <= 0.1905, certified",
      ("got %.6f"):format(r.alpha))
