@@ -16,6 +16,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "assoc.h"
 #include "seqlp.h"
@@ -676,7 +677,7 @@ static int model_solve(lua_State *L)
     static const char *const fields[] = {"flow",       "method",     "lp",      "tolerance",
                                          "time_limit", "iterations", "verbose", "mps",
                                          "beta",       "settle",     "slip",    "lps",
-                                         "starts",     "seed",       NULL};
+                                         "starts",     "seed",       "progress", NULL};
     static const char *const flows[] = {"associative", "nonassociative", NULL};
     static const char *const methods[] = {"assoc", "seqlp", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
@@ -706,6 +707,7 @@ static int model_solve(lua_State *L)
     if (seed != floor(seed) || seed > 9e15)
         fail(L, "solve: field 'seed' must be a non-negative integer, got %g", seed);
     so.seed = (unsigned long long)seed;
+    so.progress = boolean_field(L, 2, "solve", "progress", isatty(STDERR_FILENO));
     if ((so.starts || field_given(L, 2, "seed")) && !method)
         fail(L, "solve: fields 'starts' and 'seed' go with flow = \"nonassociative\"");
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);

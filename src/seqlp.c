@@ -18,6 +18,7 @@ void bl_seqlp_options_default(bl_seqlp_options *o)
     o->max_lps = 100;
     o->starts = 0;
     o->seed = 1;
+    o->progress = 0;
 }
 
 /* The state of one run, with everything it owns. */
@@ -25,6 +26,8 @@ typedef struct run {
     bl_system *cone, *fixed;
     bl_lp *lp_fixed, *lp_cone;
     double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt;
+    double t0;             /* when the run began */
+    int shown;             /* a progress line is on the screen */
     int found;             /* a certified answer is kept in best_* */
     double best_alpha, *best_x, *best_y;
 } run;
@@ -158,6 +161,11 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
         if (append(s, a)) return bl_error_set(err, "solve: out of memory");
         if (o->base.verbose)
             fprintf(stderr, "seqlp start %d LP %d: alpha %.8g\n", s->nstarts, j + 1, a);
+        else if (o->progress && bl_clock() - r->t0 > 0.5) {
+            fprintf(stderr, "\rseqlp: start %d of %d, LP %d, alpha %.6g   ", s->nstarts,
+                    o->starts + 1, j + 1, a);
+            r->shown = 1;
+        }
         if (fabs(a - prev) <= o->settle * fabs(a)) {
             bl_lp_status cs = certify(r, a, y, o->slip, &o->base, err);
             s->lps++;
@@ -267,6 +275,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     }
 
     run r = {0};
+    r.t0 = t0;
     const bl_model *mc = s->model;
     r.cone = bl_system_build(mc, BL_FRICTION_CONE, err);
     r.fixed = r.cone ? bl_system_build(mc, BL_FRICTION_FIXED, err) : NULL;
@@ -353,6 +362,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         s->alpha = s->history[s->nhistory - 1];
     }
     if (r.lp_fixed) s->lp = bl_lp_engine(r.lp_fixed);
+    if (r.shown) fprintf(stderr, "\r%60s\r", "");
     run_free(&r);
     s->time.total = bl_clock() - t0;
     s->time.solve = s->time.total - s->time.detection - s->time.assembly - s->time.verification;

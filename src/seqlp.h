@@ -19,6 +19,7 @@ typedef struct bl_seqlp_options {
     int max_lps;           /* cap on the LPs of one start (100) */
     int starts;            /* further starts from random stress states (Eq. 22) */
     unsigned long long seed; /* of those random states */
+    int progress;          /* show start, LP and alpha on stderr after 0.5 s */
 } bl_seqlp_options;
 
 void bl_seqlp_options_default(bl_seqlp_options *o);
