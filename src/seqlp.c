@@ -308,6 +308,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         bl_lp *lp = bl_solve_lp(rigid, rigid->lo, rigid->hi, NULL, &o->base, err);
         bl_lp_status st = lp ? bl_lp_solve(lp) : BL_LP_FAILED;
         s->lps++;
+        if (lp) s->iterations += bl_lp_iterations(lp);
         s->alpha_rigid = st == BL_LP_OPTIMAL ? bl_lp_primal(lp)[rigid->nforce]
                          : st == BL_LP_UNBOUNDED ? INFINITY : NAN;
         s->assoc_is_solution = fabs(s->alpha_rigid - s->alpha_assoc) <=
