@@ -699,8 +699,8 @@ static int model_solve(lua_State *L)
     if (cap != floor(cap) || cap < 2 || cap > 1e6)
         fail(L, "solve: field 'lps' must be an integer of at least 2, got %g", cap);
     so.max_lps = (int)cap;
-    double starts = number_field(L, 2, "solve", "starts", 0, NONNEG);
-    if (starts != floor(starts) || starts > 1e6)
+    double starts = number_field(L, 2, "solve", "starts", -1, NONNEG);
+    if (starts != floor(starts) || starts > 1e6 || (starts < 0 && field_given(L, 2, "starts")))
         fail(L, "solve: field 'starts' must be a non-negative integer, got %g", starts);
     so.starts = (int)starts;
     double seed = number_field(L, 2, "solve", "seed", 1, NONNEG);
@@ -708,7 +708,7 @@ static int model_solve(lua_State *L)
         fail(L, "solve: field 'seed' must be a non-negative integer, got %g", seed);
     so.seed = (unsigned long long)seed;
     so.progress = boolean_field(L, 2, "solve", "progress", isatty(STDERR_FILENO));
-    if ((so.starts || field_given(L, 2, "seed")) && !method)
+    if ((field_given(L, 2, "starts") || field_given(L, 2, "seed")) && !method)
         fail(L, "solve: fields 'starts' and 'seed' go with flow = \"nonassociative\"");
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;

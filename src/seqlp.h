@@ -17,7 +17,9 @@ typedef struct bl_seqlp_options {
     double settle;         /* |d alpha| <= settle alpha starts a certificate (1e-4) */
     double slip;           /* motions below slip x the largest count as zero (1e-4) */
     int max_lps;           /* cap on the LPs of one start (100) */
-    int starts;            /* further starts from random stress states (Eq. 22) */
+    int starts;            /* further starts from random stress states (Eq. 22);
+                              < 0: 10 when unlimited friction gives the
+                              associative alpha, else none */
     unsigned long long seed; /* of those random states */
     int progress;          /* show start, LP and alpha on stderr after 0.5 s */
 } bl_seqlp_options;
