@@ -264,3 +264,17 @@ void bl_system_power(const bl_system *s, const double *y, double *w)
         w[j] = t;
     }
 }
+
+void bl_system_point_motion(const bl_system *s, const double *y, double *w, double *dn,
+                            double *dt)
+{
+    /* the power of a unit normal (shear) force is the normal (tangential)
+     * relative velocity */
+    bl_system_power(s, y, w);
+    for (int p = 0; p < s->npoints; p++) dn[p] = dt[p] = 0.0;
+    for (int j = 0; j < s->nforce; j++) {
+        int p = s->col_point[j];
+        if (s->col_kind[j] == BL_COL_NORMAL) dn[p] = w[j];
+        else dt[p] = w[j];
+    }
+}

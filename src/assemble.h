@@ -71,4 +71,10 @@ void bl_system_residual(const bl_system *s, const double *x, double alpha, doubl
 /* w = A^T y over the force columns (w[j]: power of a unit value of column j). */
 void bl_system_power(const bl_system *s, const double *y, double *w);
 
+/* For a BL_FRICTION_FIXED system: the relative velocity of every contact
+ * point, normal dn and tangential dt (npoints each, scaled), from the row
+ * multipliers y; w is workspace of nforce entries. */
+void bl_system_point_motion(const bl_system *s, const double *y, double *w, double *dn,
+                            double *dt);
+
 #endif

@@ -59,14 +59,8 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
                             const bl_solve_options *o, bl_error *err)
 {
     const bl_system *c = r->cone, *f = r->fixed;
-    bl_system_power(f, y, r->w);
-    for (int p = 0; p < f->npoints; p++) r->dn[p] = r->dt[p] = 0.0;
+    bl_system_point_motion(f, y, r->w, r->dn, r->dt);
     double V = 0.0;
-    for (int j = 0; j < f->nforce; j++) {
-        int p = f->col_point[j];
-        if (f->col_kind[j] == BL_COL_NORMAL) r->dn[p] = r->w[j];
-        else r->dt[p] = r->w[j];
-    }
     for (int p = 0; p < f->npoints; p++) V = fmax(V, hypot(r->dn[p], r->dt[p]));
     double eps = slip * V;
     for (int j = 0; j < c->nforce; j++) {
@@ -127,7 +121,6 @@ static int start_history(bl_solution *s, double from)
     st[s->nstarts++] = s->nhistory;
     return append(s, from);
 }
-
 
 /* One start: LPs with fixed shear capacities from the normal forces r->n
  * until alpha settles and a certificate is found (returns 1, and keeps the

@@ -73,20 +73,6 @@ int bl_verify(const bl_system *s, double alpha, const double *x, const double *y
            res->complementarity <= tol && res->normalization <= tol && res->work <= tol;
 }
 
-/* Per contact point: normal and shear relative velocity (dn, dt) from the
- * powers of the fixed system's NORMAL and SHEAR columns. */
-static void point_motion(const bl_system *fixed, const double *y, double *w, double *dn,
-                         double *dt)
-{
-    bl_system_power(fixed, y, w);
-    for (int p = 0; p < fixed->npoints; p++) dn[p] = dt[p] = 0.0;
-    for (int j = 0; j < fixed->nforce; j++) {
-        int p = fixed->col_point[j];
-        if (fixed->col_kind[j] == BL_COL_NORMAL) dn[p] = w[j];
-        else dt[p] = w[j];
-    }
-}
-
 int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alpha,
                        const double *xc, const double *y, double tol, double slip,
                        bl_residuals *res)
@@ -117,7 +103,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     }
 
     /* kinematics, per contact point */
-    point_motion(fixed, y, w, dn, dt);
+    bl_system_point_motion(fixed, y, w, dn, dt);
     double V = 0.0, X = 0.0;
     for (int p = 0; p < np; p++) {
         V = fmax(V, hypot(dn[p], dt[p]));
