@@ -7,5 +7,7 @@ arch { n = 21, radius = 1.0, thickness = 0.15 }
 load { live = "horizontal" }
 local r = solve {}
 print(r)
-r:png((arg and arg[1]) or "arch.png")
+-- the picture: to the file named on the command line, else arch.png
+local script = arg and arg[0] and arg[0]:match("arch%.lua$")
+r:png(script and arg[1] or "arch.png")
 return r

@@ -7,5 +7,7 @@ block { vertices = { { -0.2, -0.2 }, { b + 0.2, -0.2 }, { b + 0.2, 0 }, { -0.2, 
 local r = solve {}
 print(r)
 print(("closed form min(mu, b/h) = %.6g"):format(math.min(mu, b / h)))
-r:png((arg and arg[1]) or "block.png")
+-- the picture: to the file named on the command line, else block.png
+local script = arg and arg[0] and arg[0]:match("block%.lua$")
+r:png(script and arg[1] or "block.png")
 return r

@@ -6,5 +6,7 @@ wall { courses = { E, U, E, U, E, U }, unit = { 0.4, 0.175 } }
 load { live = "horizontal" }
 local r = solve { flow = "associative" }
 print(r)
-r:png((arg and arg[1]) or "w1.png")
+-- the picture: to the file named on the command line, else w1.png
+local script = arg and arg[0] and arg[0]:match("w1%.lua$")
+r:png(script and arg[1] or "w1.png")
 return r

@@ -8,5 +8,7 @@ wall { courses = { E, U, E, Wu, We, Wu, We, Wu, E, U, E }, unit = { 0.4, 0.175 }
 load { live = "horizontal" }
 local r = solve { flow = "associative" }
 print(r)
-r:png((arg and arg[1]) or "w4.png")
+-- the picture: to the file named on the command line, else w4.png
+local script = arg and arg[0] and arg[0]:match("w4%.lua$")
+r:png(script and arg[1] or "w4.png")
 return r

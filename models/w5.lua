@@ -7,5 +7,7 @@ wall { courses = { E, U, E, Wu, We, Wu, We, Wu, E, U, E, Wu, We, Wu, We, Wu, E, 
 load { live = "horizontal" }
 local r = solve { flow = "associative" }
 print(r)
-r:png((arg and arg[1]) or "w5.png")
+-- the picture: to the file named on the command line, else w5.png
+local script = arg and arg[0] and arg[0]:match("w5%.lua$")
+r:png(script and arg[1] or "w5.png")
 return r

@@ -51,7 +51,7 @@ check "require \"blocklim\" from a stock lua5.4 solves a block" grep -qx optimal
 if command -v glpsol >/dev/null; then
   for w in w4 w5; do
     alpha=$("$bin" -e "
-      local print0 = print; print = function() end; arg = { [0] = '', '$tmp/$w.png' }
+      local print0 = print; print = function() end; arg = { [0] = '$w.lua', '$tmp/$w.png' }
       dofile('$(dirname "$0")/../models/$w.lua')
       print = print0
       print(string.format('%.12g', solve { mps = '$tmp/$w.mps' }.alpha))" 2>/dev/null)
