@@ -22,6 +22,7 @@ function Result.__tostring(r)
     say("no alpha  (%s)", r.status)
   end
   say("  %s", r.message)
+  if r.note and not r.certified then say("  %s", r.note) end
   if r.alpha_assoc then
     say("  associative alpha = %.6g; %d LPs in the sequence%s", r.alpha_assoc, r.lps,
         r.certified and ", the last one its certificate" or "")

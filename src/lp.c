@@ -59,4 +59,5 @@ const double *bl_lp_primal(const bl_lp *lp) { return lp->engine->primal(lp->impl
 const double *bl_lp_dual(const bl_lp *lp) { return lp->engine->dual(lp->impl); }
 int bl_lp_iterations(const bl_lp *lp) { return lp->engine->iterations(lp->impl); }
 double bl_lp_factor_nnz(const bl_lp *lp) { return lp->engine->factor_nnz(lp->impl); }
+const double *bl_lp_ray(const bl_lp *lp) { return lp->engine->ray(lp->impl); }
 const char *bl_lp_engine(const bl_lp *lp) { return lp->engine->name; }

@@ -71,6 +71,11 @@ bl_lp_status bl_lp_solve(bl_lp *lp);
 const double *bl_lp_primal(const bl_lp *lp);
 const double *bl_lp_dual(const bl_lp *lp);
 int bl_lp_iterations(const bl_lp *lp);
+/* After an infeasible solve: a Farkas ray y of the rows (nrows; y.b > 0
+ * while A^T y <= 0 within the bounds), owned by lp; NULL when the engine has
+ * none.  Rows with large |y| are the ones whose equilibrium cannot be met. */
+const double *bl_lp_ray(const bl_lp *lp);
+
 /* Non-zeros of the interior point's Cholesky factor (0 for the simplex). */
 double bl_lp_factor_nnz(const bl_lp *lp);
 /* Writes p to file in MPS format, as the minimization of -obj (free MPS

@@ -36,7 +36,7 @@ struct clp_lp {
     ClpSimplex model;
     int nrows = 0, ncols = 0;
     bool solved = false;
-    std::vector<double> x, y;
+    std::vector<double> x, y, ray;
     int iterations = 0;
 };
 
@@ -121,6 +121,14 @@ static bl_lp_status solve(void *e)
         return BL_LP_FAILED;
     }
     int st = lp->model.status();
+    lp->ray.clear();
+    if (st == 1) {
+        double *r = lp->model.infeasibilityRay();
+        if (r) {
+            lp->ray.assign(r, r + lp->nrows);
+            delete[] r;
+        }
+    }
     if (st == 0) {
         const double *x = lp->model.primalColumnSolution();
         const double *y = lp->model.dualRowSolution();
@@ -144,6 +152,11 @@ static const double *primal(const void *e) { return static_cast<const clp_lp *>(
 static const double *dual(const void *e) { return static_cast<const clp_lp *>(e)->y.data(); }
 static int iterations(const void *e) { return static_cast<const clp_lp *>(e)->iterations; }
 static double factor_nnz(const void *) { return 0.0; }
+static const double *ray(const void *e)
+{
+    const clp_lp *lp = static_cast<const clp_lp *>(e);
+    return lp->ray.empty() ? nullptr : lp->ray.data();
+}
 
 extern "C" int bl_lp_write_mps(const bl_lp_problem *p, const char *file, bl_error *err)
 {
@@ -168,5 +181,5 @@ extern "C" int bl_lp_write_mps(const bl_lp_problem *p, const char *file, bl_erro
 }
 
 extern "C" const bl_lp_backend bl_lp_clp_engine = {
-    "simplex", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz,
+    "simplex", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz, ray,
 };

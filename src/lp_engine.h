@@ -15,6 +15,7 @@ typedef struct bl_lp_backend {
     const double *(*dual)(const void *e);
     int (*iterations)(const void *e);
     double (*factor_nnz)(const void *e);
+    const double *(*ray)(const void *e);
 } bl_lp_backend;
 
 extern const bl_lp_backend bl_lp_clp_engine;

@@ -58,6 +58,7 @@ typedef struct ipm {
     double *xu, *yu;    /* answers in user terms */
     int iterations;
     int warm;           /* xu, yu hold the last optimal answer */
+    bl_lp_status last;  /* the status of the last solve */
 } ipm;
 
 static void *xcalloc(size_t n, size_t size) { return calloc(n ? n : 1, size); }
@@ -714,12 +715,21 @@ static bl_lp_status solve(void *e)
     }
     answers(p);
     p->warm = status == BL_LP_OPTIMAL;
+    p->last = status;
     return status;
 }
 
 static const double *primal(const void *e) { return ((const ipm *)e)->xu; }
 static const double *dual(const void *e) { return ((const ipm *)e)->yu; }
 static int iterations(const void *e) { return ((const ipm *)e)->iterations; }
+
+/* After an infeasibility certificate the dual iterate y points along the
+ * ray (answers() left it, sign-flipped, in yu). */
+static const double *ray(const void *e)
+{
+    const ipm *p = e;
+    return p->last == BL_LP_INFEASIBLE ? p->yu : NULL;
+}
 
 static double factor_nnz(const void *e)
 {
@@ -728,5 +738,5 @@ static double factor_nnz(const void *e)
 }
 
 const bl_lp_backend bl_lp_ipm_engine = {
-    "ipm", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz,
+    "ipm", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz, ray,
 };

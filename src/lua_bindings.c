@@ -556,6 +556,10 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
             lua_rawseti(L, -2, k + 1);
         }
         lua_setfield(L, -2, "history");
+        if (s->note[0]) {
+            lua_pushstring(L, s->note);
+            lua_setfield(L, -2, "note");
+        }
     }
     lua_pushstring(L, s->lp ? s->lp : "");
     lua_setfield(L, -2, "lp");

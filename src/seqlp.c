@@ -122,6 +122,33 @@ static int start_history(bl_solution *s, double from)
     return append(s, from);
 }
 
+/* Writes into s->note which blocks the Farkas ray of the infeasible fixed
+ * LP weighs on: those whose equilibrium the capacities cannot meet. */
+static void name_blocks(run *r, bl_solution *s, int lp)
+{
+    const double *ray = bl_lp_ray(r->lp_fixed);
+    const bl_model *m = s->model;
+    size_t len = (size_t)snprintf(s->note, sizeof s->note,
+                                  "start %d, LP %d had no equilibrium with the relaxed friction "
+                                  "capacities", s->nstarts, lp + 1);
+    if (!ray) return;
+    double big = 0.0;
+    for (int i = 0; i < r->fixed->nrows; i++) big = fmax(big, fabs(ray[i]));
+    int named = 0;
+    for (int b = 0; b < m->nblocks && len < sizeof s->note; b++) {
+        int row = r->fixed->block_row[b];
+        if (row < 0) continue;
+        double w = fmax(fabs(ray[row]), fmax(fabs(ray[row + 1]), fabs(ray[row + 2])));
+        if (w < 1e-3 * big) continue;
+        if (named < 8)
+            len += (size_t)snprintf(s->note + len, sizeof s->note - len, "%s%d",
+                                    named ? ", " : " at blocks ", b + 1);
+        named++;
+    }
+    if (named > 8 && len < sizeof s->note)
+        snprintf(s->note + len, sizeof s->note - len, " and %d more", named - 8);
+}
+
 /* One start: LPs with fixed shear capacities from the normal forces r->n
  * until alpha settles and a certificate is found (returns 1, and keeps the
  * answer in r->best when it is the lowest yet), the cap is reached or an LP
@@ -146,7 +173,8 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
         if (st != BL_LP_OPTIMAL) {
             /* Infeasible: the relaxed normal forces cannot carry some block
              * by friction alone (DESIGN 2.4); this start ends uncertified. */
-            if (st != BL_LP_INFEASIBLE) *stop = st;
+            if (st == BL_LP_INFEASIBLE) name_blocks(r, s, j + 1);
+            else *stop = st;
             return 0;
         }
         const double *x = bl_lp_primal(r->lp_fixed), *y = bl_lp_dual(r->lp_fixed);

@@ -24,7 +24,7 @@ static const char *const status_sentences[] = {
     [BL_TIME_LIMIT] = "stopped at the time limit before an answer was found",
     [BL_INTERRUPTED] = "interrupted by the user before an answer was found",
     [BL_NUMERICAL] = "the LP engine failed numerically; no answer",
-    [BL_UNCERTIFIED] = "the sequence of LPs reached its cap without a certified answer",
+    [BL_UNCERTIFIED] = "no start of the sequence of LPs ended with a certified answer",
 };
 
 const char *bl_status_name(bl_status s) { return status_names[s]; }

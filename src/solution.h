@@ -84,6 +84,7 @@ typedef struct bl_solution {
     double *history;         /* alpha of each LP of the sequence, owned */
     int nstarts;
     int *start;              /* where each start's history begins, owned */
+    char note[256];          /* why a start ended without an answer, or "" */
 } bl_solution;
 
 /* A solution for the model copy c (taken over: freed with the solution, or

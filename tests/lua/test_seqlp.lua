@@ -88,6 +88,8 @@ wall { courses = { { 1, 1, 1 }, { 1, -1, 1 }, { 1, -1, 1 }, { 1, 1, 1 } }, unit 
 r = solve { flow = "nonassociative" }
 T.ok(r.status == "not certified" and not r.certified and not r.verified and r.residuals == nil,
      "no lintel: status not certified, no answer claimed", r.status)
+T.ok(r.note and r.note:find("at blocks 9", 1, true),
+     "no lintel: the note names block 9, the one over the opening", r.note)
 
 -- Walls with random openings: never above the associative answer, always
 -- certified, reproducible.
