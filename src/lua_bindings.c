@@ -688,8 +688,10 @@ static int model_solve(lua_State *L)
     bl_model *m = check_model(L, 1);
     opt_table(L, 2);
     check_fields(L, 2, "solve", fields, 0);
-    int flow = choice_field(L, 2, "solve", "flow", flows, 0);
-    int method = choice_field(L, 2, "solve", "method", methods, flow);
+    /* flow and method name the same choice; either one implies the other */
+    int method = choice_field(L, 2, "solve", "method", methods, 0);
+    int flow = choice_field(L, 2, "solve", "flow", flows, method);
+    if (!field_given(L, 2, "method")) method = flow;
     if (method != flow)
         fail(L, "solve: method \"%s\" solves the %s flow rule, not flow = \"%s\"",
              methods[method], flows[method], flows[flow]);

@@ -15,6 +15,7 @@ end
 
 local r = nonassoc("W4", walls.W4)
 T.eq(r.method, "seqlp", "W4: method seqlp")
+T.eq(solve { method = "seqlp" }.flow, "nonassociative", "method = \"seqlp\" alone implies the flow")
 T.near(r.alpha, 0.26374, 0.00005 / 0.26374, "W4: alpha = 0.26374 +- 0.00005")
 T.ok(r.certified, "W4: certified")
 T.ok(r.verified, "W4: verified (Eq. 12 residuals)")
