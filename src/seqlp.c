@@ -27,6 +27,7 @@ typedef struct run {
     bl_lp *lp_fixed, *lp_cone;
     double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt;
     double t0;             /* when the run began */
+    int iterations;        /* of the random-state LPs */
     int shown;             /* a progress line is on the screen */
     int found;             /* a certified answer is kept in best_* */
     double best_alpha, *best_x, *best_y;
@@ -247,6 +248,7 @@ static bl_lp_status random_state(run *r, double alpha, unsigned long long *rng,
     bl_lp *lp = bl_solve_lp(c, r->clo, r->chi, r->obj, &o->base, err);
     if (!lp) return BL_LP_FAILED;
     bl_lp_status st = bl_lp_solve(lp);
+    r->iterations += bl_lp_iterations(lp);
     if (st == BL_LP_OPTIMAL) {
         const double *x = bl_lp_primal(lp);
         for (int q = 0; q < c->npoints; q++) r->n[q] = 0.0;
@@ -387,6 +389,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         s->has_mechanism = 0;
         s->alpha = s->history[s->nhistory - 1];
     }
+    s->iterations += r.iterations;
     if (r.lp_fixed) s->lp = bl_lp_engine(r.lp_fixed);
     if (r.shown) fprintf(stderr, "\r%60s\r", "");
     run_free(&r);
