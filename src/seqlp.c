@@ -190,6 +190,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
         if (fabs(a - prev) <= o->settle * fabs(a)) {
             bl_lp_status cs = certify(r, a, y, o->slip, &o->base, err);
             s->lps++;
+            if (r->lp_cone) s->iterations += bl_lp_iterations(r->lp_cone);
             if (cs == BL_LP_FAILED && !r->lp_cone) return -1;
             if (cs == BL_LP_OPTIMAL) {
                 if (!r->found || a < r->best_alpha) {
