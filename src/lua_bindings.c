@@ -199,6 +199,43 @@ static int block_index(lua_State *L, bl_model *m, int idx, const char *fn, const
     return (int)b - 1;
 }
 
+/* ---- small setters for result tables ------------------------------------ */
+
+static void set_number(lua_State *L, const char *k, double v)
+{
+    lua_pushnumber(L, v);
+    lua_setfield(L, -2, k);
+}
+
+static void set_integer(lua_State *L, const char *k, lua_Integer v)
+{
+    lua_pushinteger(L, v);
+    lua_setfield(L, -2, k);
+}
+
+static void set_boolean(lua_State *L, const char *k, int v)
+{
+    lua_pushboolean(L, v);
+    lua_setfield(L, -2, k);
+}
+
+static void set_string(lua_State *L, const char *k, const char *v)
+{
+    lua_pushstring(L, v);
+    lua_setfield(L, -2, k);
+}
+
+static void push_pair(lua_State *L, double a, double b)
+{
+    lua_createtable(L, 2, 0);
+    lua_pushnumber(L, a);
+    lua_rawseti(L, -2, 1);
+    lua_pushnumber(L, b);
+    lua_rawseti(L, -2, 2);
+}
+
+static void push_point(lua_State *L, bl_vec2 p) { push_pair(L, p.x, p.y); }
+
 /* ---- model -------------------------------------------------------------- */
 
 static int model_new(lua_State *L)
@@ -446,18 +483,12 @@ static int model_stats(lua_State *L)
     double tol, gap;
     bl_contact_tolerances(m, &tol, &gap);
     lua_createtable(L, 0, 6);
-    lua_pushinteger(L, nfree);
-    lua_setfield(L, -2, "blocks");
-    lua_pushinteger(L, m->nblocks - nfree);
-    lua_setfield(L, -2, "supports");
-    lua_pushinteger(L, m->ninterfaces);
-    lua_setfield(L, -2, "interfaces");
-    lua_pushnumber(L, bl_model_size(m));
-    lua_setfield(L, -2, "size");
-    lua_pushnumber(L, tol);
-    lua_setfield(L, -2, "tol");
-    lua_pushnumber(L, gap);
-    lua_setfield(L, -2, "gap");
+    set_integer(L, "blocks", nfree);
+    set_integer(L, "supports", m->nblocks - nfree);
+    set_integer(L, "interfaces", m->ninterfaces);
+    set_number(L, "size", bl_model_size(m));
+    set_number(L, "tol", tol);
+    set_number(L, "gap", gap);
     return 1;
 }
 
@@ -469,50 +500,22 @@ static int model_block_info(lua_State *L)
     lua_createtable(L, 0, 5);
     lua_createtable(L, b->nv, 0);
     for (int i = 0; i < b->nv; i++) {
-        lua_createtable(L, 2, 0);
-        lua_pushnumber(L, b->v[i].x);
-        lua_rawseti(L, -2, 1);
-        lua_pushnumber(L, b->v[i].y);
-        lua_rawseti(L, -2, 2);
+        push_point(L, b->v[i]);
         lua_rawseti(L, -2, i + 1);
     }
     lua_setfield(L, -2, "vertices");
-    lua_createtable(L, 2, 0);
-    lua_pushnumber(L, b->centroid.x);
-    lua_rawseti(L, -2, 1);
-    lua_pushnumber(L, b->centroid.y);
-    lua_rawseti(L, -2, 2);
+    push_point(L, b->centroid);
     lua_setfield(L, -2, "centroid");
-    lua_pushnumber(L, b->area);
-    lua_setfield(L, -2, "area");
-    lua_pushnumber(L, b->weight);
-    lua_setfield(L, -2, "weight");
-    lua_pushboolean(L, b->support);
-    lua_setfield(L, -2, "support");
+    set_number(L, "area", b->area);
+    set_number(L, "weight", b->weight);
+    set_boolean(L, "support", b->support);
     return 1;
 }
 
 /* ---- solve and results ---------------------------------------------------- */
 
-static void set_number(lua_State *L, const char *k, double v)
-{
-    lua_pushnumber(L, v);
-    lua_setfield(L, -2, k);
-}
 
-static void push_point(lua_State *L, bl_vec2 p)
-{
-    lua_createtable(L, 2, 0);
-    lua_pushnumber(L, p.x);
-    lua_rawseti(L, -2, 1);
-    lua_pushnumber(L, p.y);
-    lua_rawseti(L, -2, 2);
-}
 
-static void push_pair(lua_State *L, double a, double b)
-{
-    push_point(L, bl_v2(a, b));
-}
 
 static void push_details(lua_State *L, const bl_solution *s);
 
@@ -524,25 +527,17 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     lua_pushvalue(L, sidx);
     lua_setfield(L, -2, "_solution");
     set_number(L, "alpha", s->alpha);
-    lua_pushstring(L, bl_status_name(s->status));
-    lua_setfield(L, -2, "status");
-    lua_pushstring(L, bl_status_sentence(s->status));
-    lua_setfield(L, -2, "message");
-    lua_pushboolean(L, s->verified);
-    lua_setfield(L, -2, "verified");
-    lua_pushstring(L, s->method);
-    lua_setfield(L, -2, "method");
-    lua_pushstring(L, s->flow);
-    lua_setfield(L, -2, "flow");
+    set_string(L, "status", bl_status_name(s->status));
+    set_string(L, "message", bl_status_sentence(s->status));
+    set_boolean(L, "verified", s->verified);
+    set_string(L, "method", s->method);
+    set_string(L, "flow", s->flow);
     if (strcmp(s->method, "seqlp") == 0) {
         set_number(L, "alpha_assoc", s->alpha_assoc);
         set_number(L, "alpha_rigid", s->alpha_rigid);
-        lua_pushboolean(L, s->assoc_is_solution);
-        lua_setfield(L, -2, "assoc_is_solution");
-        lua_pushboolean(L, s->certified);
-        lua_setfield(L, -2, "certified");
-        lua_pushinteger(L, s->lps);
-        lua_setfield(L, -2, "lps");
+        set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
+        set_boolean(L, "certified", s->certified);
+        set_integer(L, "lps", s->lps);
         set_number(L, "slip", s->slip);
         /* history[k] = the alphas of start k, from the alpha it began at */
         lua_createtable(L, s->nstarts, 0);
@@ -561,25 +556,17 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
             lua_setfield(L, -2, "note");
         }
     }
-    lua_pushstring(L, s->lp ? s->lp : "");
-    lua_setfield(L, -2, "lp");
-    lua_pushinteger(L, s->iterations);
-    lua_setfield(L, -2, "iterations");
+    set_string(L, "lp", s->lp ? s->lp : "");
+    set_integer(L, "iterations", s->iterations);
     set_number(L, "tolerance", s->tolerance);
     int nfree = bl_model_free_blocks(m);
     lua_createtable(L, 0, 5);
-    lua_pushinteger(L, nfree);
-    lua_setfield(L, -2, "blocks");
-    lua_pushinteger(L, m->nblocks - nfree);
-    lua_setfield(L, -2, "supports");
-    lua_pushinteger(L, m->ninterfaces);
-    lua_setfield(L, -2, "interfaces");
-    lua_pushinteger(L, s->rows);
-    lua_setfield(L, -2, "rows");
-    lua_pushinteger(L, s->cols);
-    lua_setfield(L, -2, "columns");
-    lua_pushnumber(L, s->factor_nnz);
-    lua_setfield(L, -2, "factor_nnz");
+    set_integer(L, "blocks", nfree);
+    set_integer(L, "supports", m->nblocks - nfree);
+    set_integer(L, "interfaces", m->ninterfaces);
+    set_integer(L, "rows", s->rows);
+    set_integer(L, "columns", s->cols);
+    set_number(L, "factor_nnz", s->factor_nnz);
     lua_setfield(L, -2, "size");
 
     lua_createtable(L, 0, 5);
@@ -636,12 +623,9 @@ static void push_details(lua_State *L, const bl_solution *s)
         const bl_interface *in = &m->interfaces[k];
         const double *f = s->force + 4 * k;
         lua_createtable(L, 0, 10);
-        lua_pushinteger(L, in->a + 1);
-        lua_setfield(L, -2, "a");
-        lua_pushinteger(L, in->b + 1);
-        lua_setfield(L, -2, "b");
-        lua_pushstring(L, bl_state_name(s->state[k]));
-        lua_setfield(L, -2, "state");
+        set_integer(L, "a", in->a + 1);
+        set_integer(L, "b", in->b + 1);
+        set_string(L, "state", bl_state_name(s->state[k]));
         lua_createtable(L, 2, 0);
         push_point(L, in->p[0]);
         lua_rawseti(L, -2, 1);
