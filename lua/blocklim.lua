@@ -15,6 +15,12 @@ return function(core)
   end
   report.draw = core.draw
 
+  -- The latest result, kept also when Ctrl-C stopped the solve.
+  function M.last()
+    local r = core.last()
+    return r and report.wrap(r)
+  end
+
   function M.model(t)
     current = core.model(t or {})
     return current
@@ -53,7 +59,7 @@ return function(core)
   -- The names the program puts into _G (a script that requires the module
   -- from a stock Lua may do the same: require("blocklim").globals()).
   local exported = { "model", "block", "contacts", "interface", "load", "solve",
-                     "stats", "wall", "arch", "current" }
+                     "stats", "wall", "arch", "current", "last" }
   function M.globals(env)
     env = env or _G
     for _, n in ipairs(exported) do env[n] = M[n] end

@@ -22,10 +22,11 @@ function Result.__tostring(r)
     say("no alpha  (%s)", r.status)
   end
   say("  %s", r.message)
-  if r.note and not r.certified then say("  %s", r.note) end
+  if r.note and (not r.certified or r.interrupted) then say("  %s", r.note) end
   if r.alpha_assoc then
-    say("  associative alpha = %.6g; %d LPs in the sequence%s", r.alpha_assoc, r.lps,
-        r.certified and ", the last one its certificate" or "")
+    say("  associative alpha = %.6g%s; %d LPs in the sequence%s", r.alpha_assoc,
+        r.certified and "" or " (an upper bound on the non-associative one)", r.lps,
+        r.certified and not r.interrupted and ", the last one its certificate" or "")
     if r.assoc_is_solution then
       say("  (with unlimited friction alpha is the same: the associative answer is itself a")
       say("  non-associative solution; starts = K looks for lower ones)")

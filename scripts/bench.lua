@@ -17,7 +17,7 @@ for c = 1, n do courses[c] = c % 2 == 1 and E or U end
 wall { courses = courses, unit = { 0.4, 0.175 } }
 local t1 = clock()
 local r = engine == "seqlp" and solve { flow = "nonassociative", time_limit = limit }
-  or solve { lp = engine, time_limit = limit }
+  or solve { flow = "associative", lp = engine, time_limit = limit }
 local t = r.timings
 print(("method=%s n=%d blocks=%d interfaces=%d rows=%d columns=%d lp=%s lps=%d iterations=%d factor_nnz=%.0f status=%s "
   .. "alpha=%.8g verified=%s generate=%.3f detection=%.3f assembly=%.3f solve=%.3f "

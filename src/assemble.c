@@ -1,5 +1,6 @@
 #include "assemble.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -143,6 +144,11 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
                     bl_vec2 arm = bl_v2_scale(
                         bl_v2_sub(in->p[e], m->blocks[blk[side]].centroid), 1.0 / s->L0);
                     double mom = bl_v2_cross(arm, f);
+                    /* A moment below the round-off of arm x f is zero: CLP's
+                     * scaling blew a 5.6e-17 up into a false "infeasible"
+                     * (a block with b/h = mu, where rocking and sliding tie). */
+                    double noise = 8.0 * DBL_EPSILON * (fabs(arm.x * f.y) + fabs(arm.y * f.x));
+                    if (fabs(mom) <= noise) mom = 0.0;
                     s->rowind[nz] = r;     s->val[nz++] = sg * f.x;
                     s->rowind[nz] = r + 1; s->val[nz++] = sg * f.y;
                     s->rowind[nz] = r + 2; s->val[nz++] = sg * mom;

@@ -27,6 +27,7 @@
 
 #define MODEL_MT "blocklim.model"
 #define SOLUTION_MT "blocklim.solution"
+#define LAST_RESULT "blocklim.last"
 
 /* ---- argument checking ------------------------------------------------- */
 
@@ -537,6 +538,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         set_number(L, "alpha_rigid", s->alpha_rigid);
         set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
         set_boolean(L, "certified", s->certified);
+        set_boolean(L, "interrupted", s->interrupted);
         set_integer(L, "lps", s->lps);
         set_number(L, "slip", s->slip);
         /* history[k] = the alphas of start k, from the alpha it began at */
@@ -673,7 +675,9 @@ static int model_solve(lua_State *L)
     opt_table(L, 2);
     check_fields(L, 2, "solve", fields, 0);
     /* flow and method name the same choice; either one implies the other */
-    int method = choice_field(L, 2, "solve", "method", methods, 0);
+    /* By default, the non-associative answer (the associative one beside
+     * it) wherever a joint has finite friction. */
+    int method = choice_field(L, 2, "solve", "method", methods, 1);
     int flow = choice_field(L, 2, "solve", "flow", flows, method);
     if (!field_given(L, 2, "method")) method = flow;
     if (method != flow)
@@ -698,6 +702,7 @@ static int model_solve(lua_State *L)
         fail(L, "solve: field 'seed' must be a non-negative integer, got %g", seed);
     so.seed = (unsigned long long)seed;
     so.progress = boolean_field(L, 2, "solve", "progress", isatty(STDERR_FILENO));
+    so.when_sliding = !field_given(L, 2, "method") && !field_given(L, 2, "flow");
     if ((field_given(L, 2, "starts") || field_given(L, 2, "seed")) && !method)
         fail(L, "solve: fields 'starts' and 'seed' go with flow = \"nonassociative\"");
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
@@ -732,9 +737,28 @@ static int model_solve(lua_State *L)
     int rc = method ? bl_seqlp_solve(m, &so, box, &err) : bl_assoc_solve(m, &o, box, &err);
     sigaction(SIGINT, &old, NULL);
     if (rc) return fail(L, "%s", err.msg);
-    if ((*box)->status == BL_INTERRUPTED)
+    const bl_solution *s = *box;
+    if (s->status == BL_INTERRUPTED && !s->interrupted)
         return fail(L, "solve: interrupted (Ctrl-C); the model is as it was");
-    push_result(L, *box, sidx);
+    push_result(L, s, sidx);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, LUA_REGISTRYINDEX, LAST_RESULT);
+    /* A sequence stopped by Ctrl-C still stops the chunk, but what it found
+     * is kept for last(). */
+    if (s->interrupted) {
+        if (s->certified)
+            return fail(L, "solve: interrupted (Ctrl-C) after %d LPs; the lowest certified alpha "
+                           "so far, %.6g, is in last()", s->lps, s->alpha);
+        return fail(L, "solve: interrupted (Ctrl-C) after %d LPs, nothing certified yet; "
+                       "the history is in last()", s->lps);
+    }
+    return 1;
+}
+
+/* core.last(): the result of the latest solve, also of one stopped by Ctrl-C. */
+static int core_last(lua_State *L)
+{
+    lua_getfield(L, LUA_REGISTRYINDEX, LAST_RESULT);
     return 1;
 }
 
@@ -795,7 +819,8 @@ int luaopen_blocklim(lua_State *L)
         {"load", model_load},           {"solve", model_solve},       {"stats", model_stats},
         {"block_info", model_block_info}, {NULL, NULL}};
     static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw},
-                                     {"clock", core_clock}, {NULL, NULL}};
+                                     {"clock", core_clock}, {"last", core_last},
+                                     {NULL, NULL}};
 
     if (luaL_newmetatable(L, MODEL_MT)) {
         lua_pushcfunction(L, model_gc);

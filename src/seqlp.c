@@ -19,6 +19,7 @@ void bl_seqlp_options_default(bl_seqlp_options *o)
     o->starts = -1;
     o->seed = 1;
     o->progress = 0;
+    o->when_sliding = 0;
 }
 
 /* The state of one run, with everything it owns. */
@@ -278,6 +279,19 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     double t0 = bl_clock();
     bl_solution *s;
     if (bl_assoc_solve(m, &o->base, &s, err)) return -1;
+    /* Only joints with finite, non-zero friction dilate: without any, the
+     * associative answer is the non-associative one.  Without an
+     * associative answer there is nothing to start from: that result is
+     * returned as it is. */
+    int sliding = 0;
+    for (int k = 0; k < s->model->ninterfaces; k++) {
+        double mu = s->model->interfaces[k].mu;
+        sliding |= isfinite(mu) && mu > 0.0;
+    }
+    if ((!sliding && o->when_sliding) || (s->status != BL_OPTIMAL && s->status != BL_UNSTABLE)) {
+        *out = s;
+        return 0;
+    }
     s->method = "seqlp";
     s->flow = "nonassociative";
     s->alpha_assoc = s->alpha;
@@ -285,17 +299,6 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     s->lps = 1;
     s->certified = 0;
     s->verified = 0;
-    if (s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) {
-        *out = s; /* no associative answer: none without dilatancy either */
-        return 0;
-    }
-    /* Only joints with finite, non-zero friction dilate: without any, the
-     * associative answer is the non-associative one, with no sequence. */
-    int sliding = 0;
-    for (int k = 0; k < s->model->ninterfaces; k++) {
-        double mu = s->model->interfaces[k].mu;
-        sliding |= isfinite(mu) && mu > 0.0;
-    }
 
     run r = {0};
     r.t0 = t0;
@@ -374,6 +377,13 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         if (one_start(&r, o, s, from, &stop, err) < 0) goto fail;
     }
 
+    if (stop == BL_LP_INTERRUPTED) {
+        s->interrupted = 1;
+        snprintf(s->note, sizeof s->note,
+                 "stopped by Ctrl-C after %d LPs, in start %d of %d: %s", s->lps, s->nstarts,
+                 starts + 1, r.found ? "the lowest certified answer so far; lower ones may exist"
+                                     : "nothing certified yet");
+    }
     if (r.found) {
         s->alpha = r.best_alpha;
         s->status = s->alpha < 0.0 ? BL_UNSTABLE : BL_OPTIMAL;
@@ -388,7 +398,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     } else {
         s->status = stop != BL_LP_OPTIMAL ? bl_status_of_lp(stop) : BL_UNCERTIFIED;
         s->has_mechanism = 0;
-        s->alpha = s->history[s->nhistory - 1];
+        s->alpha = NAN; /* an LP of fixed capacities bounds nothing */
     }
     s->iterations += r.iterations;
     if (r.lp_fixed) s->lp = bl_lp_engine(r.lp_fixed);

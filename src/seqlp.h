@@ -22,13 +22,17 @@ typedef struct bl_seqlp_options {
                               associative alpha, else none */
     unsigned long long seed; /* of those random states */
     int progress;          /* show start, LP and alpha on stderr after 0.5 s */
+    int when_sliding;      /* solve's default: without a joint of finite, non-zero
+                              friction, return the associative answer alone */
 } bl_seqlp_options;
 
 void bl_seqlp_options_default(bl_seqlp_options *o);
 
 /* As bl_assoc_solve; the solution's alpha is the certified non-associative
  * multiplier, alpha_assoc the associative one, and status BL_UNCERTIFIED
- * when the cap came first. */
+ * when the cap came first.  With when_sliding, a model whose joints cannot
+ * slide (no friction, or unlimited friction: both flow rules give the same
+ * answer) gets the associative solution, method "assoc". */
 int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl_error *err);
 
 #endif

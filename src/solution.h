@@ -78,6 +78,7 @@ typedef struct bl_solution {
     double alpha_rigid;      /* ... with unlimited friction (INFINITY: unbounded) */
     int assoc_is_solution;   /* alpha_assoc = alpha_rigid: friction limits nothing */
     int certified;           /* a certificate LP accepted (alpha, x, u) */
+    int interrupted;         /* Ctrl-C ended the search early */
     double slip;             /* the slip threshold used, relative */
     int lps;                 /* LPs solved (all kinds) */
     int nhistory;

@@ -54,7 +54,7 @@ if command -v glpsol >/dev/null; then
       local print0 = print; print = function() end; arg = { [0] = '$w.lua', '$tmp/$w.png' }
       dofile('$(dirname "$0")/../models/$w.lua')
       print = print0
-      print(string.format('%.12g', solve { mps = '$tmp/$w.mps' }.alpha))" 2>/dev/null)
+      print(string.format('%.12g', solve { flow = 'associative', mps = '$tmp/$w.mps' }.alpha))" 2>/dev/null)
     glpsol --freemps "$tmp/$w.mps" --min -o "$tmp/$w.sol" >/dev/null 2>&1
     obj=$(sed -n 's/^Objective: *OBJROW = \([-0-9.e+]*\).*/\1/p' "$tmp/$w.sol")
     check "$w: the MPS file solved by GLPK gives alpha ($alpha vs ${obj#-})" \
@@ -82,7 +82,7 @@ LUA
   tmux new-session -d -s "$s" -x 120 -y 30 "HOME=$tmp $bin -i $tmp/big.lua"
   sleep 1
   for lp in simplex ipm; do
-    tmux send-keys -t "$s" "r = solve{ lp = '$lp' }" Enter
+    tmux send-keys -t "$s" "r = solve{ flow = 'associative', lp = '$lp' }" Enter
     sleep 1.5
     tmux send-keys -t "$s" C-c
     sleep 1.5
@@ -97,6 +97,29 @@ LUA
     test "$(grep -c 'solve: interrupted' <<<"$screen")" -eq 2
   check "the model is intact after Ctrl-C, and Ctrl-C on a typed line keeps the session" \
     grep -qE 'blocks[[:space:]]+10050' <<<"$screen"
+
+  # Ctrl-C during a long sequence of LPs (W4 with very many restarts): the
+  # chunk stops, and the lowest certified answer so far is kept in last().
+  cat > "$tmp/w4.lua" <<'LUA'
+model { mu = 0.65 }
+local E, U = { .5, 1, 1, 1, 1, .5 }, { 1, 1, 1, 1, 1 }
+local Wu, We = { 1, -1, 1, -1, 1 }, { .5, .5, -1, .5, .5, -1, .5, .5 }
+wall { courses = { E, U, E, Wu, We, Wu, We, Wu, E, U, E }, unit = { 0.4, 0.175 } }
+LUA
+  tmux new-session -d -s "$s" -x 200 -y 30 "HOME=$tmp $bin -i $tmp/w4.lua"
+  sleep 1
+  tmux send-keys -t "$s" "r = solve{ flow = 'nonassociative', starts = 1000000 }" Enter
+  sleep 2
+  tmux send-keys -t "$s" C-c
+  sleep 1.5
+  tmux send-keys -t "$s" 'l = last(); print("kept", r == nil, l.interrupted, l.certified, l.verified, l.alpha <= 0.26379, l.lps > 20)' Enter
+  sleep 1
+  screen=$(tmux capture-pane -p -t "$s")
+  tmux kill-session -t "$s" 2>/dev/null
+  check "Ctrl-C stops a sequence of LPs and says where its answer is" \
+    grep -q 'lowest certified alpha so far, 0.263.*is in last()' <<<"$screen"
+  check "last() keeps the certified answer of the interrupted sequence (W4 alpha <= 0.26379)" \
+    grep -qE 'kept[[:space:]]+true[[:space:]]+true[[:space:]]+true[[:space:]]+true[[:space:]]+true[[:space:]]+true' <<<"$screen"
 else
   echo "ok $((n + 1)) - Ctrl-C test # SKIP tmux not installed"; n=$((n + 1))
 fi

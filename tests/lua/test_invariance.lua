@@ -25,7 +25,7 @@ local function solve_transformed(list, f, gravity, live, mu)
     block { vertices = v, support = b.support }
   end
   load { live = "horizontal", direction = live }
-  return solve { lp = engine }
+  return solve { flow = "associative", lp = engine }
 end
 
 local function rot(a)

@@ -9,8 +9,8 @@ local walls = require "walls"
 
 local function both(name, build)
   build()
-  local s = solve { lp = "simplex" }
-  local r = solve { lp = "ipm" }
+  local s = solve { flow = "associative", lp = "simplex" }
+  local r = solve { flow = "associative", lp = "ipm" }
   T.eq(r.lp, "ipm", name .. ": the interior point ran")
   T.near(r.alpha, s.alpha, 1e-7, name .. ": ipm alpha = simplex alpha", 1e-3)
   T.ok(r.verified, name .. ": ipm answer verified")

@@ -25,6 +25,22 @@ T.ok(not r.assoc_is_solution and r.alpha_rigid > r.alpha_assoc,
 T.ok(#r.history == 1 and r.history[1][1] == r.alpha_assoc,
      "W4: one start, its history beginning at the associative alpha")
 
+-- The default: the non-associative answer wherever a joint has finite
+-- friction, the associative one beside it; rigid joints need no sequence.
+model { mu = 0.65 }
+wall { courses = walls.W4, unit = { 0.4, 0.175 } }
+local d = solve {}
+T.ok(d.method == "seqlp" and d.certified and math.abs(d.alpha - 0.26374) <= 0.00005
+     and math.abs(d.alpha_assoc - 0.33195) <= 0.5e-5,
+     "W4: solve{} gives the certified non-associative 0.26374 beside the associative 0.33195",
+     ("got %s %.6f %.6f"):format(d.method, d.alpha, d.alpha_assoc or 0))
+T.ok(rawequal(last(), d), "last() returns the latest result")
+model { mu = math.huge }
+wall { courses = walls.W4, unit = { 0.4, 0.175 } }
+d = solve {}
+T.ok(d.method == "assoc" and d.flow == "associative",
+     "W4 with unlimited friction: solve{} solves the single associative LP")
+
 r = nonassoc("W5", walls.W5)
 T.ok(r.alpha >= 0.2086 and r.alpha <= 0.2197, "W5: alpha in [0.2086, 0.2197]",
      ("got %.6f"):format(r.alpha))
@@ -89,6 +105,7 @@ wall { courses = { { 1, 1, 1 }, { 1, -1, 1 }, { 1, -1, 1 }, { 1, 1, 1 } }, unit 
 r = solve { flow = "nonassociative" }
 T.ok(r.status == "not certified" and not r.certified and not r.verified and r.residuals == nil,
      "no lintel: status not certified, no answer claimed", r.status)
+T.ok(r.alpha ~= r.alpha, "no lintel: alpha is NaN, not the last LP's value", tostring(r.alpha))
 T.ok(r.note and r.note:find("at blocks 9", 1, true),
      "no lintel: the note names block 9, the one over the opening", r.note)
 
