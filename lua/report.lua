@@ -30,6 +30,8 @@ function Result.__tostring(r)
     if r.assoc_is_solution then
       say("  (with unlimited friction alpha is the same: the associative answer is itself a")
       say("  non-associative solution; starts = K looks for lower ones)")
+    elseif r.certified and #r.history == 1 then
+      say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")
     end
   end
   say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
