@@ -34,8 +34,17 @@ function Result.__tostring(r)
       say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")
     end
   end
-  say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
-      r.lp, r.iterations, size.rows, size.columns)
+  if r.ipopt then
+    local i = r.ipopt
+    say("  %s flow, mpec method: Ipopt %s after %d iterations, %d constraints x %d variables",
+        r.flow, i.status, r.iterations, size.rows, size.columns)
+    say("  complementarity by %s, started from %s%s; sum of products %s", i.complementarity,
+        i.start, i.alpha_start == i.alpha_start and (" (alpha %.6g)"):format(i.alpha_start) or "",
+        g(i.pairs))
+  else
+    say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
+        r.lp, r.iterations, size.rows, size.columns)
+  end
   local line = ("  %d blocks, %d support%s, %d interfaces"):format(
     size.blocks, size.supports, size.supports == 1 and "" or "s", size.interfaces)
   if r.states then

@@ -77,6 +77,12 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         bl_system_mechanism(sys, m, y, s->u);
         bl_solution_classify(s);
         s->verified = bl_verify(sys, s->alpha, x, y, o->tolerance, &s->res);
+        if (bl_solution_keep(s, x, sys->ncols, y, sys->nrows)) {
+            bl_lp_free(lp);
+            bl_system_free(sys);
+            bl_solution_free(s);
+            return bl_error_set(err, "solve: out of memory");
+        }
     }
     double t4 = bl_clock();
     s->time.detection = t1 - t0;

@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "assoc.h"
+#include "mpec.h"
 #include "seqlp.h"
 #include "contact.h"
 #include "draw.h"
@@ -558,6 +559,16 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
             lua_setfield(L, -2, "note");
         }
     }
+    if (strcmp(s->method, "mpec") == 0) {
+        lua_createtable(L, 0, 5);
+        set_string(L, "status", s->nlp_status);
+        set_string(L, "complementarity", s->comp);
+        set_string(L, "start", s->start_kind);
+        set_number(L, "alpha_start", s->alpha_start);
+        set_number(L, "pairs", s->pair_sum);
+        lua_setfield(L, -2, "ipopt");
+        if (strcmp(s->flow, "nonassociative") == 0) set_number(L, "slip", s->slip);
+    }
     set_string(L, "lp", s->lp ? s->lp : "");
     set_integer(L, "iterations", s->iterations);
     set_number(L, "tolerance", s->tolerance);
@@ -664,25 +675,40 @@ static void on_sigint(int sig)
 
 static int model_solve(lua_State *L)
 {
-    static const char *const fields[] = {"flow",       "method",     "lp",      "tolerance",
-                                         "time_limit", "iterations", "verbose", "mps",
-                                         "beta",       "settle",     "slip",    "lps",
-                                         "starts",     "seed",       "progress", NULL};
+    static const char *const fields[] = {
+        "flow",     "method", "lp",    "tolerance", "time_limit",      "iterations", "verbose",
+        "mps",      "beta",   "settle", "slip",     "lps",             "starts",     "seed",
+        "progress", "start",  "penalty", "complementarity", NULL};
     static const char *const flows[] = {"associative", "nonassociative", NULL};
-    static const char *const methods[] = {"assoc", "seqlp", NULL};
+    static const char *const methods[] = {"assoc", "seqlp", "mpec", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
+    static const char *const comps[] = {"penalty", "relaxation", "homotopy", NULL};
+    static const char *const starts_from[] = {"cold", "assoc", "seqlp", NULL};
+    enum { ASSOC, SEQLP, MPEC };
     bl_model *m = check_model(L, 1);
     opt_table(L, 2);
     check_fields(L, 2, "solve", fields, 0);
-    /* flow and method name the same choice; either one implies the other */
     /* By default, the non-associative answer (the associative one beside
-     * it) wherever a joint has finite friction. */
-    int method = choice_field(L, 2, "solve", "method", methods, 1);
-    int flow = choice_field(L, 2, "solve", "flow", flows, method);
-    if (!field_given(L, 2, "method")) method = flow;
-    if (method != flow)
+     * it) wherever a joint has finite friction.  assoc and seqlp each solve
+     * one flow rule, mpec either. */
+    int method = choice_field(L, 2, "solve", "method", methods, SEQLP);
+    int flow = choice_field(L, 2, "solve", "flow", flows, method == ASSOC ? 0 : 1);
+    if (!field_given(L, 2, "method")) method = flow ? SEQLP : ASSOC;
+    if (method != MPEC && method != flow)
         fail(L, "solve: method \"%s\" solves the %s flow rule, not flow = \"%s\"",
              methods[method], flows[method], flows[flow]);
+    if (method != MPEC && (field_given(L, 2, "start") || field_given(L, 2, "penalty") ||
+                           field_given(L, 2, "complementarity")))
+        fail(L, "solve: fields 'start', 'penalty' and 'complementarity' go with method = \"mpec\"");
+    bl_mpec_options mo;
+    bl_mpec_options_default(&mo);
+    mo.nonassociative = flow;
+    mo.comp = (bl_mpec_complementarity)choice_field(L, 2, "solve", "complementarity", comps,
+                                                    mo.comp);
+    /* from the other method's answer of the same flow rule */
+    mo.start = (bl_mpec_start)choice_field(L, 2, "solve", "start", starts_from,
+                                           flow ? BL_MPEC_START_SEQLP : BL_MPEC_START_ASSOC);
+    mo.penalty = number_field(L, 2, "solve", "penalty", mo.penalty, POSITIVE);
     bl_seqlp_options so;
     bl_seqlp_options_default(&so);
     so.beta = number_field(L, 2, "solve", "beta", so.beta, POSITIVE);
@@ -703,7 +729,7 @@ static int model_solve(lua_State *L)
     so.seed = (unsigned long long)seed;
     so.progress = boolean_field(L, 2, "solve", "progress", isatty(STDERR_FILENO));
     so.when_sliding = !field_given(L, 2, "method") && !field_given(L, 2, "flow");
-    if ((field_given(L, 2, "starts") || field_given(L, 2, "seed")) && !method)
+    if ((field_given(L, 2, "starts") || field_given(L, 2, "seed")) && method == ASSOC)
         fail(L, "solve: fields 'starts' and 'seed' go with flow = \"nonassociative\"");
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;
@@ -721,6 +747,10 @@ static int model_solve(lua_State *L)
     if (iters != floor(iters) || iters > 1e9)
         fail(L, "solve: field 'iterations' must be a positive integer, got %g", iters);
     o.iterations = (int)iters;
+    if (method == MPEC && iters > 0) {
+        mo.iterations = (int)iters; /* Ipopt's cap; the start's LP keeps its own */
+        o.iterations = 0;
+    }
 
     bl_solution **box = lua_newuserdatauv(L, sizeof *box, 0);
     *box = NULL;
@@ -734,7 +764,11 @@ static int model_solve(lua_State *L)
     sigaction(SIGINT, &sa, &old);
     previous_sigint = old;
     so.base = o;
-    int rc = method ? bl_seqlp_solve(m, &so, box, &err) : bl_assoc_solve(m, &o, box, &err);
+    mo.seq = so;
+    mo.seq.when_sliding = 0;
+    int rc = method == MPEC    ? bl_mpec_solve(m, &mo, box, &err)
+             : method == SEQLP ? bl_seqlp_solve(m, &so, box, &err)
+                               : bl_assoc_solve(m, &o, box, &err);
     sigaction(SIGINT, &old, NULL);
     if (rc) return fail(L, "%s", err.msg);
     const bl_solution *s = *box;

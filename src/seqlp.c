@@ -395,10 +395,17 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         s->verified = bl_verify_nonassoc(r.cone, r.fixed, s->alpha, r.best_x, r.best_y,
                                          o->base.tolerance, o->slip, &s->res);
         s->time.verification += bl_clock() - tv;
+        if (bl_solution_keep(s, r.best_x, r.cone->ncols, r.best_y, r.fixed->nrows)) {
+            bl_error_set(err, "solve: out of memory");
+            goto fail;
+        }
     } else {
         s->status = stop != BL_LP_OPTIMAL ? bl_status_of_lp(stop) : BL_UNCERTIFIED;
         s->has_mechanism = 0;
         s->alpha = NAN; /* an LP of fixed capacities bounds nothing */
+        free(s->x);
+        free(s->y);
+        s->x = s->y = NULL; /* the associative start's, no longer the answer */
     }
     s->iterations += r.iterations;
     if (r.lp_fixed) s->lp = bl_lp_engine(r.lp_fixed);

@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 static const char *const status_names[] = {
     [BL_OPTIMAL] = "optimal",
@@ -13,6 +14,9 @@ static const char *const status_names[] = {
     [BL_INTERRUPTED] = "interrupted",
     [BL_NUMERICAL] = "numerical trouble",
     [BL_UNCERTIFIED] = "not certified",
+    [BL_LOCALLY_INFEASIBLE] = "locally infeasible",
+    [BL_RESTORATION_FAILED] = "restoration failed",
+    [BL_NOT_COMPLEMENTARY] = "not complementary",
 };
 
 static const char *const status_sentences[] = {
@@ -25,6 +29,11 @@ static const char *const status_sentences[] = {
     [BL_INTERRUPTED] = "interrupted by the user before an answer was found",
     [BL_NUMERICAL] = "the LP engine failed numerically; no answer",
     [BL_UNCERTIFIED] = "no start of the sequence of LPs ended with a certified answer",
+    [BL_LOCALLY_INFEASIBLE] = "Ipopt converged to a point that violates the constraints least; "
+                              "no answer",
+    [BL_RESTORATION_FAILED] = "Ipopt's restoration phase failed to regain feasibility; no answer",
+    [BL_NOT_COMPLEMENTARY] = "Ipopt converged to a point the residuals reject (complementarity or "
+                             "flow rule not met): a stationary point of the penalty, not an answer",
 };
 
 const char *bl_status_name(bl_status s) { return status_names[s]; }
@@ -83,7 +92,28 @@ void bl_solution_free(bl_solution *s)
     free(s->hinge);
     free(s->history);
     free(s->start);
+    free(s->x);
+    free(s->y);
     free(s);
+}
+
+int bl_solution_keep(bl_solution *s, const double *x, int nx, const double *y, int ny)
+{
+    free(s->x);
+    free(s->y);
+    s->x = malloc(((size_t)nx + 1) * sizeof *s->x);
+    s->y = malloc(((size_t)ny + 1) * sizeof *s->y);
+    if (!s->x || !s->y) {
+        free(s->x);
+        free(s->y);
+        s->x = s->y = NULL;
+        return -1;
+    }
+    memcpy(s->x, x, (size_t)nx * sizeof *x);
+    memcpy(s->y, y, (size_t)ny * sizeof *y);
+    s->nx = nx;
+    s->ny = ny;
+    return 0;
 }
 
 bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec2 p)

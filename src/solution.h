@@ -18,7 +18,11 @@ typedef enum bl_status {
     BL_TIME_LIMIT,
     BL_INTERRUPTED,
     BL_NUMERICAL,    /* the LP engine failed */
-    BL_UNCERTIFIED   /* the sequence of LPs found no certified answer */
+    BL_UNCERTIFIED,  /* the sequence of LPs found no certified answer */
+    BL_LOCALLY_INFEASIBLE, /* Ipopt: converged to a point of least infeasibility */
+    BL_RESTORATION_FAILED, /* Ipopt: its restoration phase failed */
+    BL_NOT_COMPLEMENTARY   /* Ipopt converged, but not to a solution: the
+                              verifier rejects it (complementarity, flow) */
 } bl_status;
 
 /* The status word the Lua side shows ("optimal", "unstable", ...) and a
@@ -60,6 +64,11 @@ typedef struct bl_solution {
     double *u;               /* 3 per block: vx, vy, omega (1/force units,
                                 live load does unit work); 0 for supports */
     double *force;           /* 4 per interface: n0, t0, n1, t1 at p[0], p[1] */
+    /* the scaled answer on the Coulomb-cone system (assemble.h), owned,
+     * NULL when there is none: its columns (forces, then alpha) and its
+     * row multipliers (the mechanism); a start for another method */
+    double *x, *y;
+    int nx, ny;
     bl_state *state;         /* per interface */
     int *hinge;              /* per interface: 0 or 1 for a rocking joint's
                                 closed end, -1 otherwise */
@@ -86,6 +95,12 @@ typedef struct bl_solution {
     int nstarts;
     int *start;              /* where each start's history begins, owned */
     char note[256];          /* why a start ended without an answer, or "" */
+    /* the direct solve (method "mpec") */
+    double alpha_start;      /* alpha of the point it started from (NAN: cold) */
+    const char *nlp_status;  /* Ipopt's outcome in words, static */
+    const char *comp;        /* "penalty", "relaxation" or "homotopy", static */
+    const char *start_kind;  /* where it started ("cold", "assoc", "seqlp"), static */
+    double pair_sum;         /* sum of the complementary products at the end */
 } bl_solution;
 
 /* A solution for the model copy c (taken over: freed with the solution, or
@@ -93,6 +108,10 @@ typedef struct bl_solution {
  * of memory. */
 bl_solution *bl_solution_new(bl_model *c);
 void bl_solution_free(bl_solution *s);
+
+/* Keeps copies of the scaled answer x (nx) and y (ny) in s.  Returns 0, or
+ * -1 when out of memory. */
+int bl_solution_keep(bl_solution *s, const double *x, int nx, const double *y, int ny);
 
 /* The status of a solve whose LP ended with st (alpha's sign aside). */
 bl_status bl_status_of_lp(bl_lp_status st);

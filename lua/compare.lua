@@ -1,0 +1,135 @@
+-- compare.lua - several methods on the current model, side by side.
+--
+-- compare{ methods = { "assoc", "seqlp", "mpec", { method = "mpec", start = "cold" } },
+--          lp = ..., tolerance = ... }
+-- Each entry of methods is a method name or a table of solve{} fields (with
+-- an optional label); the other fields go to every solve.  Returns a
+-- comparison: rows[i] has the result and how far its mechanism agrees with
+-- the first row's (doc/theory.md, "Comparing methods"); print(c) shows the
+-- table.
+return function(M)
+  local Comparison = {}
+  Comparison.__index = Comparison
+
+  local function fail(msg) error("compare: " .. msg, 3) end
+
+  -- A block's velocity as (vx, vy, omega l), l the typical block size, so
+  -- that translation and rotation weigh alike.
+  local function velocities(r, free, l)
+    local v = {}
+    for _, i in ipairs(free) do
+      local u = r.mechanism[i]
+      v[#v + 1], v[#v + 2], v[#v + 3] = u[1], u[2], u[3] * l
+    end
+    return v
+  end
+
+  -- u . v / (|u| |v|): 1 for the same mechanism, 0 for unrelated ones.
+  local function cosine(u, v)
+    local uv, uu, vv = 0, 0, 0
+    for k = 1, #u do
+      uv, uu, vv = uv + u[k] * v[k], uu + u[k] ^ 2, vv + v[k] ^ 2
+    end
+    if uu == 0 or vv == 0 then return 0 / 0 end
+    return uv / math.sqrt(uu * vv)
+  end
+
+  local function label_of(entry)
+    if type(entry) == "string" then return entry end
+    if entry.label then return entry.label end
+    local parts = { entry.method or entry.flow or "default" }
+    for _, k in ipairs { "flow", "start", "complementarity", "lp" } do
+      if entry[k] and k ~= "method" then parts[#parts + 1] = tostring(entry[k]) end
+    end
+    return table.concat(parts, " ")
+  end
+
+  function M.compare(t)
+    t = t or {}
+    if type(t) ~= "table" then fail("expects a table of named fields, got " .. type(t)) end
+    local methods = t.methods or { "assoc", "seqlp", "mpec" }
+    if type(methods) ~= "table" or #methods == 0 then
+      fail("field 'methods' must be a non-empty list of method names or solve{} tables")
+    end
+    local m = M.current()
+    if not m then fail("no current model; start one with model{ mu = 0.65 }") end
+    local common = {}
+    for k, v in pairs(t) do
+      if k ~= "methods" then common[k] = v end
+    end
+
+    local rows = {}
+    for i, entry in ipairs(methods) do
+      local fields = {}
+      for k, v in pairs(common) do fields[k] = v end
+      if type(entry) == "string" then
+        fields.method = entry
+      elseif type(entry) == "table" then
+        for k, v in pairs(entry) do
+          if k ~= "label" then fields[k] = v end
+        end
+      else
+        fail(("methods[%d] must be a method name or a table, got %s"):format(i, type(entry)))
+      end
+      if fields.method == "assoc" and fields.flow == nil then fields.flow = "associative" end
+      local ok, r = pcall(m.solve, m, fields)
+      if not ok then fail(("methods[%d] (%s): %s"):format(i, label_of(entry), tostring(r))) end
+      rows[i] = { label = label_of(entry), result = r }
+    end
+
+    -- agreement with the first row's mechanism and interface states
+    local free, area, nfree = {}, 0, 0
+    for i = 1, m:stats().blocks + m:stats().supports do
+      local b = m:block_info(i)
+      if not b.support then
+        free[#free + 1] = i
+        area, nfree = area + math.sqrt(b.area), nfree + 1
+      end
+    end
+    local l = nfree > 0 and area / nfree or 1
+    local first = rows[1].result
+    local ref = first.mechanism and velocities(first, free, l)
+    for _, row in ipairs(rows) do
+      local r = row.result
+      if ref and r.mechanism then
+        row.agreement = cosine(ref, velocities(r, free, l))
+        local differ = 0
+        for k, joint in ipairs(r.interfaces) do
+          if joint.state ~= first.interfaces[k].state then differ = differ + 1 end
+        end
+        row.differing = differ
+      end
+    end
+    return setmetatable({ rows = rows }, Comparison)
+  end
+
+  local function g(x)
+    if x == nil then return "-" end
+    if x ~= x then return "nan" end
+    return ("%.1e"):format(x)
+  end
+
+  function Comparison.__tostring(c)
+    local out = {}
+    local head = ("%-22s %-6s %-10s %8s %8s %5s %8s %8s %8s %8s %-6s %7s %7s")
+      :format("method", "flow", "alpha", "time s", "iter.", "LPs", "equil.", "yield", "compl.",
+              "dilat.", "verif.", "mech.", "states")
+    out[1] = head
+    out[2] = ("-"):rep(#head)
+    for _, row in ipairs(c.rows) do
+      local r, e = row.result, row.result.residuals or {}
+      local answered = r.status == "optimal" or r.status == "unstable"
+      out[#out + 1] = ("%-22s %-6s %-10s %8.3f %8d %5s %8s %8s %8s %8s %-6s %7s %7s"):format(
+        row.label:sub(1, 22), r.flow == "associative" and "assoc" or "non-a",
+        answered and ("%.6f"):format(r.alpha) or r.status:sub(1, 10), r.timings.total,
+        r.iterations, r.method == "mpec" and "-" or tostring(r.lps or 1), g(e.equilibrium), g(e.yield), g(e.complementarity),
+        g(e.dilatancy), tostring(r.verified), row.agreement and ("%.4f"):format(row.agreement) or "-",
+        row.differing and tostring(row.differing) or "-")
+    end
+    out[#out + 1] = ("mech.: u . u1 / (|u| |u1|) against the first row's mechanism; "
+                     .. "states: interfaces whose state differs from the first row's")
+    return table.concat(out, "\n")
+  end
+
+  return M.compare
+end

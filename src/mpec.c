@@ -1,0 +1,548 @@
+#include "mpec.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <IpStdCInterface.h>
+
+#include "assemble.h"
+#include "verify.h"
+
+void bl_mpec_options_default(bl_mpec_options *o)
+{
+    bl_seqlp_options_default(&o->seq);
+    o->nonassociative = 1;
+    o->comp = BL_MPEC_PENALTY;
+    o->start = BL_MPEC_START_SEQLP;
+    o->penalty = 100.0;
+    o->iterations = 3000;
+}
+
+/* Ipopt's "infinite" bound. */
+#define BIG 1e20
+
+/* The nonlinear program (doc/theory.md, Eqs. T20-T24).  Variables: alpha,
+ * the force columns x of the cone system, the row multipliers u, then slip
+ * rates s+, s- (per point that slides), distances c+, c- of a cohesion
+ * column from its bounds, and one slack z per complementary pair whose
+ * second member is a linear expression.  Constraints: the linear rows
+ * (triplets), then, with a relaxation, one row a b <= eps per pair. */
+typedef struct nlp {
+    int n, m;                /* variables, constraints */
+    int nlin;                /* linear constraint rows */
+    int nnz;                 /* linear Jacobian entries */
+    int *jr, *jc;            /* their rows and columns */
+    double *jv;              /* and values */
+    int npairs;
+    int *pa, *pb;            /* complementary pairs of variables */
+    double *lo, *hi, *glo, *ghi;
+    int relax;               /* the a b <= eps rows are present */
+    double rho;              /* penalty weight, 0 when off */
+    int iterations;          /* counted by the intermediate callback */
+} nlp;
+
+static void nlp_free(nlp *p)
+{
+    free(p->jr);
+    free(p->jc);
+    free(p->jv);
+    free(p->pa);
+    free(p->pb);
+    free(p->lo);
+    free(p->hi);
+    free(p->glo);
+    free(p->ghi);
+}
+
+/* A growing list of triplets and constraint rows. */
+static int add(nlp *p, int *cap, int row, int col, double v)
+{
+    if (v == 0.0) return 0;
+    if (p->nnz == *cap) {
+        int c = *cap ? 2 * *cap : 1024;
+        int *r = realloc(p->jr, (size_t)c * sizeof *r);
+        if (r) p->jr = r;
+        int *k = realloc(p->jc, (size_t)c * sizeof *k);
+        if (k) p->jc = k;
+        double *x = realloc(p->jv, (size_t)c * sizeof *x);
+        if (x) p->jv = x;
+        if (!r || !k || !x) return -1;
+        *cap = c;
+    }
+    p->jr[p->nnz] = row;
+    p->jc[p->nnz] = col;
+    p->jv[p->nnz++] = v;
+    return 0;
+}
+
+/* Adds coef times a column of the fixed system (the relative velocity of
+ * a contact point, as a linear form in u) to row `row`. */
+static int add_motion(nlp *p, int *cap, const bl_system *f, int col, int u0, int row, double coef)
+{
+    for (int q = f->colptr[col]; q < f->colptr[col + 1]; q++)
+        if (add(p, cap, row, u0 + f->rowind[q], coef * f->val[q])) return -1;
+    return 0;
+}
+
+/* Where each contact point's variables are. */
+typedef struct layout {
+    int nx, nu, x0, u0;      /* x at x0 (alpha at 0), u at u0 */
+    int *jn, *js;            /* per point: its normal and shear column in the fixed system */
+    int *sp;                 /* per point: index of s+ (s- follows), or -1 */
+    int *cc;                 /* per cone column: index of c+ (c- follows), or -1 */
+    int *zc;                 /* per cone column: its slack z, or -1 */
+} layout;
+
+static void layout_free(layout *l)
+{
+    free(l->jn);
+    free(l->js);
+    free(l->sp);
+    free(l->cc);
+    free(l->zc);
+}
+
+/* Builds the program of the cone system c (and its fixed twin f) for the
+ * flow rule asked.  Returns 0 or -1 (out of memory). */
+static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int nonassoc,
+                 double eps)
+{
+    int np = c->npoints, nx = c->nforce, nu = c->nrows;
+    l->nx = nx;
+    l->nu = nu;
+    l->x0 = 1;
+    l->u0 = 1 + nx;
+    l->jn = malloc(((size_t)np + 1) * sizeof *l->jn);
+    l->js = malloc(((size_t)np + 1) * sizeof *l->js);
+    l->sp = malloc(((size_t)np + 1) * sizeof *l->sp);
+    l->cc = malloc(((size_t)nx + 1) * sizeof *l->cc);
+    l->zc = malloc(((size_t)nx + 1) * sizeof *l->zc);
+    if (!l->jn || !l->js || !l->sp || !l->cc || !l->zc) return -1;
+    for (int q = 0; q < np; q++) l->jn[q] = l->js[q] = l->sp[q] = -1;
+    for (int j = 0; j < f->nforce; j++) {
+        if (f->col_kind[j] == BL_COL_NORMAL) l->jn[f->col_point[j]] = j;
+        if (f->col_kind[j] == BL_COL_SHEAR) l->js[f->col_point[j]] = j;
+    }
+
+    /* variables: which points slide (need s+-), cohesion distances, slacks */
+    int n = l->u0 + nu, npairs = 0;
+    for (int j = 0; j < nx; j++) {
+        int q = c->col_point[j], k = c->col_kind[j];
+        int cone = k == BL_COL_CONE_POS || k == BL_COL_CONE_NEG;
+        if (((cone && nonassoc) || k == BL_COL_COHESION) && l->sp[q] < 0) {
+            l->sp[q] = n;
+            n += 2;
+        }
+    }
+    for (int j = 0; j < nx; j++) {
+        int k = c->col_kind[j];
+        l->cc[j] = l->zc[j] = -1;
+        if (k == BL_COL_COHESION) {
+            l->cc[j] = n;
+            n += 2;
+            npairs += 2;
+        } else if (k != BL_COL_SHEAR) {
+            l->zc[j] = n++;
+            npairs++;
+        }
+    }
+    p->n = n;
+    p->npairs = npairs;
+    p->lo = malloc((size_t)n * sizeof *p->lo);
+    p->hi = malloc((size_t)n * sizeof *p->hi);
+    p->pa = malloc(((size_t)npairs + 1) * sizeof *p->pa);
+    p->pb = malloc(((size_t)npairs + 1) * sizeof *p->pb);
+    if (!p->lo || !p->hi || !p->pa || !p->pb) return -1;
+    for (int v = 0; v < n; v++) {
+        p->lo[v] = 0.0;
+        p->hi[v] = BIG;
+    }
+    p->lo[0] = -BIG;
+    for (int j = 0; j < nx; j++) {
+        p->lo[l->x0 + j] = isinf(c->lo[j]) ? -BIG : c->lo[j];
+        p->hi[l->x0 + j] = isinf(c->hi[j]) ? BIG : c->hi[j];
+    }
+    for (int i = 0; i < nu; i++) p->lo[l->u0 + i] = -BIG;
+
+    /* linear rows */
+    int cap = 0, row = 0, rcap = nu + 1 + 4 * np + 2 * nx + 1;
+    p->glo = malloc(((size_t)rcap + npairs) * sizeof *p->glo);
+    p->ghi = malloc(((size_t)rcap + npairs) * sizeof *p->ghi);
+    if (!p->glo || !p->ghi) return -1;
+#define ROW(a, b) (p->glo[row] = (a), p->ghi[row] = (b), row++)
+    /* equilibrium (T5): A x + alpha fL = -fD */
+    for (int j = 0; j <= nx; j++)
+        for (int q = c->colptr[j]; q < c->colptr[j + 1]; q++)
+            if (add(p, &cap, c->rowind[q], j < nx ? l->x0 + j : 0, c->val[q])) return -1;
+    for (int i = 0; i < nu; i++) ROW(c->rhs[i], c->rhs[i]);
+    /* normalization: fL . u = 1 */
+    for (int q = c->colptr[nx]; q < c->colptr[nx + 1]; q++)
+        if (add(p, &cap, row, l->u0 + c->rowind[q], c->val[q])) return -1;
+    ROW(1.0, 1.0);
+    /* per point: no interpenetration, slip = s+ - s-, or no slip when rigid */
+    for (int q = 0; q < np; q++) {
+        if (l->jn[q] < 0) continue;
+        if (add_motion(p, &cap, f, l->jn[q], l->u0, row, 1.0)) return -1;
+        ROW(0.0, BIG);
+        if (l->js[q] < 0) continue;
+        int rigid = isinf(c->mu[q]);
+        if (l->sp[q] < 0 && !rigid) continue;
+        if (add_motion(p, &cap, f, l->js[q], l->u0, row, 1.0)) return -1;
+        if (l->sp[q] >= 0 && (add(p, &cap, row, l->sp[q], -1.0) ||
+                              add(p, &cap, row, l->sp[q] + 1, 1.0)))
+            return -1;
+        ROW(0.0, 0.0);
+    }
+    /* the pairs: a force column and its slack, a cohesion distance and a slip */
+    int k = 0;
+    for (int j = 0; j < nx; j++) {
+        int q = c->col_point[j], kind = c->col_kind[j];
+        if (l->cc[j] >= 0) { /* c+ = C - x, c- = x + C; pairs (c-, s+), (c+, s-) */
+            if (add(p, &cap, row, l->cc[j], 1.0) || add(p, &cap, row, l->x0 + j, 1.0)) return -1;
+            ROW(c->hi[j], c->hi[j]);
+            if (add(p, &cap, row, l->cc[j] + 1, 1.0) || add(p, &cap, row, l->x0 + j, -1.0))
+                return -1;
+            ROW(-c->lo[j], -c->lo[j]);
+            p->pa[k] = l->cc[j] + 1;
+            p->pb[k++] = l->sp[q];
+            p->pa[k] = l->cc[j];
+            p->pb[k++] = l->sp[q] + 1;
+            continue;
+        }
+        if (l->zc[j] < 0) continue;
+        /* z = the column's power (associative: nt . (dn, dt)), or without
+         * dilatancy z = dn + the slip rate the column's friction opposes */
+        if (add(p, &cap, row, l->zc[j], 1.0)) return -1;
+        if (add_motion(p, &cap, f, l->jn[q], l->u0, row, -c->col_nt[2 * j])) return -1;
+        if (kind == BL_COL_CONE_POS || kind == BL_COL_CONE_NEG) {
+            if (nonassoc) {
+                if (add(p, &cap, row, l->sp[q] + (kind == BL_COL_CONE_NEG), -1.0)) return -1;
+            } else if (add_motion(p, &cap, f, l->js[q], l->u0, row, -c->col_nt[2 * j + 1])) {
+                return -1;
+            }
+        }
+        ROW(0.0, 0.0);
+        p->pa[k] = l->x0 + j;
+        p->pb[k++] = l->zc[j];
+    }
+    p->nlin = row;
+    p->relax = eps > 0.0;
+    if (p->relax)
+        for (int t = 0; t < npairs; t++) ROW(-BIG, eps);
+#undef ROW
+    p->m = row;
+    return 0;
+}
+
+/* ---- Ipopt's callbacks ------------------------------------------------------ */
+
+static Bool eval_f(Index n, Number *x, Bool new_x, Number *f, UserDataPtr ud)
+{
+    (void)n, (void)new_x;
+    const nlp *p = ud;
+    double s = 0.0;
+    for (int k = 0; k < p->npairs; k++) s += x[p->pa[k]] * x[p->pb[k]];
+    *f = x[0] + p->rho * s;
+    return 1;
+}
+
+static Bool eval_grad_f(Index n, Number *x, Bool new_x, Number *g, UserDataPtr ud)
+{
+    (void)new_x;
+    const nlp *p = ud;
+    memset(g, 0, (size_t)n * sizeof *g);
+    g[0] = 1.0;
+    for (int k = 0; k < p->npairs; k++) {
+        g[p->pa[k]] += p->rho * x[p->pb[k]];
+        g[p->pb[k]] += p->rho * x[p->pa[k]];
+    }
+    return 1;
+}
+
+static Bool eval_g(Index n, Number *x, Bool new_x, Index m, Number *g, UserDataPtr ud)
+{
+    (void)n, (void)new_x;
+    const nlp *p = ud;
+    memset(g, 0, (size_t)m * sizeof *g);
+    for (int t = 0; t < p->nnz; t++) g[p->jr[t]] += p->jv[t] * x[p->jc[t]];
+    if (p->relax)
+        for (int k = 0; k < p->npairs; k++) g[p->nlin + k] = x[p->pa[k]] * x[p->pb[k]];
+    return 1;
+}
+
+static Bool eval_jac_g(Index n, Number *x, Bool new_x, Index m, Index nele, Index *ir,
+                       Index *jc, Number *v, UserDataPtr ud)
+{
+    (void)n, (void)new_x, (void)m, (void)nele;
+    const nlp *p = ud;
+    if (!v) {
+        memcpy(ir, p->jr, (size_t)p->nnz * sizeof *ir);
+        memcpy(jc, p->jc, (size_t)p->nnz * sizeof *jc);
+        if (p->relax)
+            for (int k = 0, t = p->nnz; k < p->npairs; k++, t += 2) {
+                ir[t] = ir[t + 1] = p->nlin + k;
+                jc[t] = p->pa[k];
+                jc[t + 1] = p->pb[k];
+            }
+    } else {
+        memcpy(v, p->jv, (size_t)p->nnz * sizeof *v);
+        if (p->relax)
+            for (int k = 0, t = p->nnz; k < p->npairs; k++, t += 2) {
+                v[t] = x[p->pb[k]];
+                v[t + 1] = x[p->pa[k]];
+            }
+    }
+    return 1;
+}
+
+/* The Hessian of the Lagrangian: one entry per pair, (max, min) of its two
+ * variables: obj_factor rho from the penalty, lambda_k from its relaxation
+ * row. */
+static Bool eval_h(Index n, Number *x, Bool new_x, Number obj_factor, Index m, Number *lambda,
+                   Bool new_lambda, Index nele, Index *ir, Index *jc, Number *v, UserDataPtr ud)
+{
+    (void)n, (void)x, (void)new_x, (void)m, (void)new_lambda, (void)nele;
+    const nlp *p = ud;
+    for (int k = 0; k < p->npairs; k++) {
+        if (!v) {
+            int a = p->pa[k], b = p->pb[k];
+            ir[k] = a > b ? a : b;
+            jc[k] = a > b ? b : a;
+        } else {
+            v[k] = obj_factor * p->rho + (p->relax ? lambda[p->nlin + k] : 0.0);
+        }
+    }
+    return 1;
+}
+
+static Bool intermediate(Index mode, Index iter, Number obj, Number inf_pr, Number inf_du,
+                         Number mu, Number d_norm, Number reg, Number alpha_du, Number alpha_pr,
+                         Index ls, UserDataPtr ud)
+{
+    (void)mode, (void)obj, (void)inf_pr, (void)inf_du, (void)mu, (void)d_norm, (void)reg;
+    (void)alpha_du, (void)alpha_pr, (void)ls, (void)iter;
+    nlp *p = ud;
+    p->iterations++;
+    return !bl_interrupt_pending();
+}
+
+/* ---- the solve -------------------------------------------------------------- */
+
+/* The start of the program from a solution's scaled answer (x: cone
+ * columns and alpha, y: rows); slip rates, cohesion distances and slacks
+ * follow from their definitions, clipped at zero. */
+static void start_from(const nlp *p, const layout *l, const bl_system *c, const bl_system *f,
+                       const double *x, const double *y, int nonassoc, double *v)
+{
+    memset(v, 0, (size_t)p->n * sizeof *v);
+    v[0] = x[l->nx];
+    memcpy(v + l->x0, x, (size_t)l->nx * sizeof *v);
+    memcpy(v + l->u0, y, (size_t)l->nu * sizeof *v);
+    double *w = malloc(((size_t)f->nforce + 1) * sizeof *w);
+    if (!w) return;
+    bl_system_power(f, y, w);
+    for (int q = 0; q < c->npoints; q++)
+        if (l->sp[q] >= 0 && l->js[q] >= 0) {
+            v[l->sp[q]] = fmax(w[l->js[q]], 0.0);
+            v[l->sp[q] + 1] = fmax(-w[l->js[q]], 0.0);
+        }
+    for (int j = 0; j < l->nx; j++) {
+        int q = c->col_point[j], kind = c->col_kind[j];
+        if (l->cc[j] >= 0) {
+            v[l->cc[j]] = fmax(c->hi[j] - x[j], 0.0);
+            v[l->cc[j] + 1] = fmax(x[j] - c->lo[j], 0.0);
+        } else if (l->zc[j] >= 0) {
+            double z = c->col_nt[2 * j] * w[l->jn[q]];
+            if (kind == BL_COL_CONE_POS || kind == BL_COL_CONE_NEG)
+                z += nonassoc ? v[l->sp[q] + (kind == BL_COL_CONE_NEG)]
+                              : c->col_nt[2 * j + 1] * w[l->js[q]];
+            v[l->zc[j]] = fmax(z, 0.0);
+        }
+    }
+    free(w);
+}
+
+static int run_ipopt(nlp *p, double *v, double *mult, const bl_mpec_options *o,
+                     enum ApplicationReturnStatus *rs)
+{
+    int nhess = p->npairs, njac = p->nnz + (p->relax ? 2 * p->npairs : 0);
+    IpoptProblem ip = CreateIpoptProblem(p->n, p->lo, p->hi, p->m, p->glo, p->ghi, njac, nhess, 0,
+                                         eval_f, eval_g, eval_grad_f, eval_jac_g, eval_h);
+    if (!ip) return -1;
+    AddIpoptIntOption(ip, "print_level", o->seq.base.verbose ? 5 : 0);
+    AddIpoptStrOption(ip, "sb", "yes");
+    AddIpoptIntOption(ip, "max_iter", o->iterations);
+    AddIpoptNumOption(ip, "tol", 1e-10);
+    AddIpoptStrOption(ip, "mu_strategy", "adaptive");
+    /* Ipopt relaxes bounds by 1e-8 by default: the answer then violated
+     * admissibility by 1.4e-7 on W4, above the verification tolerance. */
+    AddIpoptNumOption(ip, "bound_relax_factor", 0.0);
+    if (o->seq.base.time_limit > 0)
+        AddIpoptNumOption(ip, "max_cpu_time", o->seq.base.time_limit);
+    SetIntermediateCallback(ip, intermediate);
+    double obj;
+    double *ml = mult + p->m, *mu = mult + p->m + p->n;
+    *rs = IpoptSolve(ip, v, NULL, &obj, mult, ml, mu, p);
+    FreeIpoptProblem(ip);
+    return 0;
+}
+
+static const char *ipopt_word(enum ApplicationReturnStatus r)
+{
+    switch (r) {
+    case Solve_Succeeded: return "solved";
+    case Solved_To_Acceptable_Level: return "solved to acceptable level";
+    case Infeasible_Problem_Detected: return "locally infeasible";
+    case Search_Direction_Becomes_Too_Small: return "search direction too small";
+    case Diverging_Iterates: return "diverging iterates";
+    case User_Requested_Stop: return "interrupted";
+    case Maximum_Iterations_Exceeded: return "iteration limit";
+    case Restoration_Failed: return "restoration failed";
+    case Error_In_Step_Computation: return "error in step computation";
+    case Maximum_CpuTime_Exceeded: return "time limit";
+    default: return "failed";
+    }
+}
+
+static bl_status status_of(enum ApplicationReturnStatus r)
+{
+    switch (r) {
+    case Solve_Succeeded:
+    case Solved_To_Acceptable_Level: return BL_OPTIMAL;
+    case Infeasible_Problem_Detected: return BL_LOCALLY_INFEASIBLE;
+    case User_Requested_Stop: return BL_INTERRUPTED;
+    case Maximum_Iterations_Exceeded: return BL_ITERATION_LIMIT;
+    case Maximum_CpuTime_Exceeded: return BL_TIME_LIMIT;
+    case Restoration_Failed: return BL_RESTORATION_FAILED;
+    default: return BL_NUMERICAL;
+    }
+}
+
+int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_error *err)
+{
+    double t0 = bl_clock();
+    /* the start: the associative LP (also for a cold start: it detects,
+     * copies the model and tells models without an answer apart), or the
+     * sequence of LPs */
+    bl_solution *s;
+    int rc = o->start == BL_MPEC_START_SEQLP ? bl_seqlp_solve(m, &o->seq, &s, err)
+                                              : bl_assoc_solve(m, &o->seq.base, &s, err);
+    if (rc) return -1;
+    const char *start_kind = o->start == BL_MPEC_START_COLD    ? "cold"
+                             : o->start == BL_MPEC_START_ASSOC ? "assoc"
+                                                               : "seqlp";
+    if (o->start == BL_MPEC_START_SEQLP && !s->x && s->status != BL_INTERRUPTED) {
+        /* no certified answer to start from: the associative one */
+        bl_solution_free(s);
+        if (bl_assoc_solve(m, &o->seq.base, &s, err)) return -1;
+        start_kind = "assoc (the sequence of LPs did not certify)";
+    }
+    if (s->status == BL_INTERRUPTED) {
+        *out = s;
+        return 0;
+    }
+    double alpha_start = s->x && o->start != BL_MPEC_START_COLD ? s->alpha : NAN;
+    double t_start = bl_clock() - t0;
+    if (o->start != BL_MPEC_START_COLD && !s->x) {
+        /* no answer to start from: the start's status is the answer */
+        *out = s;
+        return 0;
+    }
+
+    const bl_model *mc = s->model;
+    bl_system *c = bl_system_build(mc, BL_FRICTION_CONE, err);
+    bl_system *f = c ? bl_system_build(mc, BL_FRICTION_FIXED, err) : NULL;
+    nlp p = {0};
+    layout l = {0};
+    double *v = NULL, *mult = NULL;
+    if (!f) goto fail;
+    int nonassoc = o->nonassociative;
+    double eps0 = o->comp == BL_MPEC_PENALTY ? 0.0 : 1e-2;
+    if (build(&p, &l, c, f, nonassoc, eps0)) goto oom;
+    p.rho = o->comp == BL_MPEC_RELAXATION ? 0.0 : o->penalty;
+    v = calloc((size_t)p.n, sizeof *v);
+    mult = calloc((size_t)p.m + 2 * (size_t)p.n, sizeof *mult);
+    if (!v || !mult) goto oom;
+    if (o->start != BL_MPEC_START_COLD) start_from(&p, &l, c, f, s->x, s->y, nonassoc, v);
+
+    /* one solve, or the relaxation's sequence of eps, each from the last */
+    enum ApplicationReturnStatus r = Solve_Succeeded;
+    double t1 = bl_clock();
+    for (double eps = eps0;; eps *= 1e-2) {
+        if (p.relax)
+            for (int k = 0; k < p.npairs; k++) p.ghi[p.nlin + k] = eps;
+        if (run_ipopt(&p, v, mult, o, &r)) goto oom;
+        if (o->seq.base.verbose && p.relax)
+            fprintf(stderr, "mpec: eps %.0e, alpha %.10g, Ipopt %s\n", eps, v[0], ipopt_word(r));
+        if (!p.relax || eps <= 1e-10 || (r != Solve_Succeeded && r != Solved_To_Acceptable_Level))
+            break;
+    }
+    double t2 = bl_clock();
+
+    /* the answer, or the last point, with its residuals */
+    s->method = "mpec";
+    s->flow = nonassoc ? "nonassociative" : "associative";
+    s->status = status_of(r);
+    s->alpha = v[0];
+    if (s->status == BL_OPTIMAL && s->alpha < 0.0) s->status = BL_UNSTABLE;
+    s->alpha_start = alpha_start;
+    s->iterations = p.iterations;
+    s->nlp_status = ipopt_word(r);
+    s->comp = o->comp == BL_MPEC_PENALTY ? "penalty"
+              : o->comp == BL_MPEC_RELAXATION ? "relaxation" : "homotopy";
+    s->start_kind = start_kind;
+    s->pair_sum = 0.0;
+    for (int k = 0; k < p.npairs; k++) s->pair_sum += fabs(v[p.pa[k]] * v[p.pb[k]]);
+    s->rows = p.m;
+    s->cols = p.n;
+    s->lp = "ipopt";
+    s->factor_nnz = 0.0;
+    s->certified = 0;
+    s->slip = o->seq.slip;
+    double *xa = malloc(((size_t)l.nx + 1) * sizeof *xa);
+    if (!xa) goto oom;
+    memcpy(xa, v + l.x0, (size_t)l.nx * sizeof *xa);
+    xa[l.nx] = v[0];
+    s->has_mechanism = 1;
+    s->res.flow = s->res.dilatancy = NAN; /* set by the non-associative check only */
+    bl_system_forces(c, mc, xa, s->force);
+    bl_system_mechanism(c, mc, v + l.u0, s->u);
+    bl_solution_classify(s);
+    s->verified = nonassoc ? bl_verify_nonassoc(c, f, s->alpha, xa, v + l.u0, o->seq.base.tolerance,
+                                                o->seq.slip, &s->res)
+                           : bl_verify(c, s->alpha, xa, v + l.u0, o->seq.base.tolerance, &s->res);
+    if (s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) s->verified = 0;
+    else if (!s->verified) s->status = BL_NOT_COMPLEMENTARY;
+    int kept = bl_solution_keep(s, xa, l.nx + 1, v + l.u0, l.nu);
+    free(xa);
+    if (kept) goto oom;
+    /* the start's own solve and checks count as solving; building the
+     * program as assembly */
+    double t3 = bl_clock();
+    s->time.solve = t_start - s->time.detection - s->time.assembly + (t2 - t1);
+    s->time.assembly += t1 - (t0 + t_start);
+    s->time.verification = t3 - t2;
+    s->time.total = t3 - t0;
+
+    nlp_free(&p);
+    layout_free(&l);
+    free(v);
+    free(mult);
+    bl_system_free(c);
+    bl_system_free(f);
+    *out = s;
+    return 0;
+oom:
+    bl_error_set(err, "solve: out of memory building the nonlinear program");
+fail:
+    nlp_free(&p);
+    layout_free(&l);
+    free(v);
+    free(mult);
+    bl_system_free(c);
+    bl_system_free(f);
+    bl_solution_free(s);
+    return -1;
+}

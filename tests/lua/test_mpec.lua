@@ -1,0 +1,109 @@
+-- The direct solve of Eq. 12 by Ipopt (method "mpec") against the LP
+-- methods, and compare{}.  References: the associative LP's alpha (an
+-- independent method, to 1e-6 relative as the issue asks), the published W4
+-- band [0.2600, 0.2650], the closed form min(mu, b/h) of a block, and the
+-- verifier's residuals (doc/theory.md, verification), which every accepted
+-- answer must meet at the default tolerance 1e-7 (non-associative flow rule:
+-- the slip threshold 1e-4).
+package.path = (arg[0]:match("(.*/)") or "./") .. "?.lua;" .. package.path
+local T = require "tap"
+local walls = require "walls"
+
+local function build(courses, mu)
+  model { mu = mu or 0.65 }
+  wall { courses = courses, unit = { 0.4, 0.175 } }
+end
+
+-- every residual of r within its tolerance: 1e-7, and the flow-rule ones
+-- (non-associative) within the slip threshold
+local function residuals_ok(r)
+  local e = r.residuals
+  if not e then return false end
+  local ok = e.equilibrium <= 1e-7 and e.yield <= 1e-7 and e.admissibility <= 1e-7
+             and e.normalization <= 1e-7
+  if r.flow == "nonassociative" then
+    return ok and e.complementarity <= r.slip and e.flow <= r.slip and e.dilatancy <= r.slip
+  end
+  return ok and e.complementarity <= 1e-7 and e.work <= 1e-7
+end
+
+-- Associative flow: the NLP reproduces the LP.
+for _, w in ipairs { "W1", "W4", "W5" } do
+  build(walls[w])
+  local lp = solve { flow = "associative" }
+  local r = solve { method = "mpec", flow = "associative" }
+  T.near(r.alpha, lp.alpha, 1e-6, w .. ": associative mpec alpha = LP alpha (1e-6 relative)")
+  T.ok(r.verified and residuals_ok(r), w .. ": associative mpec verified, every residual <= 1e-7")
+  T.ok(r.method == "mpec" and r.ipopt.start == "assoc" and r.ipopt.pairs < 1e-6,
+       w .. ": from the associative LP, complementary products summing below 1e-6",
+       r.ipopt.start .. " " .. r.ipopt.pairs)
+end
+build(walls.W4)
+local cold = solve { method = "mpec", flow = "associative", start = "cold" }
+T.near(cold.alpha, 0.33194840, 1e-6, "W4: associative mpec from a cold start = LP alpha")
+
+-- Non-associative flow on W4: the published band, verified by the residuals.
+build(walls.W4)
+local r = solve { method = "mpec" }
+T.ok(r.alpha >= 0.2600 and r.alpha <= 0.2650, "W4: non-associative mpec alpha in [0.2600, 0.2650]",
+     ("%.6f"):format(r.alpha))
+T.ok(r.verified and residuals_ok(r), "W4: non-associative mpec answer passes every residual")
+local homotopy = solve { method = "mpec", start = "assoc", complementarity = "homotopy" }
+T.ok(homotopy.verified and residuals_ok(homotopy) or homotopy.status ~= "optimal",
+     "W4: the homotopy from the associative answer is verified, or says it is not an answer",
+     ("%s %.6f"):format(homotopy.status, homotopy.alpha))
+
+-- Never above the associative alpha (the non-associative load is bounded by
+-- it), on the benchmark walls and random openings.
+local cases = { { "W1", walls.W1 }, { "W5", walls.W5 }, { "random wall 3", walls.random(3) },
+                { "random wall 8", walls.random(8) } }
+for _, c in ipairs(cases) do
+  build(c[2], 0.6)
+  local a = solve { flow = "associative" }
+  local n = solve { method = "mpec" }
+  T.ok(n.status ~= "optimal" or n.alpha <= a.alpha * (1 + 1e-7),
+       c[1] .. ": non-associative mpec alpha not above the associative one",
+       ("%s %.6f vs %.6f"):format(n.status, n.alpha, a.alpha))
+  T.ok(n.status ~= "optimal" or (n.verified and residuals_ok(n)),
+       c[1] .. ": an mpec answer claimed optimal is verified", n.status)
+end
+
+-- A single block: both flows give min(mu, b/h).
+for _, case in ipairs { { 0.5, 1, 0.3 }, { 0.5, 1, 0.8 }, { 0.4, 0.3, 0.5 } } do
+  local b, h, mu = case[1], case[2], case[3]
+  model { mu = mu }
+  block { vertices = { { 0, 0 }, { b, 0 }, { b, h }, { 0, h } } }
+  block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+  for _, flow in ipairs { "associative", "nonassociative" } do
+    local s = solve { method = "mpec", flow = flow }
+    T.near(s.alpha, math.min(mu, b / h), 1e-6,
+           ("block b = %g, h = %g, mu = %g, %s mpec: alpha = min(mu, b/h)"):format(b, h, mu, flow))
+  end
+end
+
+-- Failures are statuses with the last point and its residuals.
+build(walls.W4)
+local stopped = solve { method = "mpec", iterations = 3 }
+T.ok(stopped.status == "iteration limit" and stopped.residuals and not stopped.verified,
+     "Ipopt's iteration limit: a status, the last point's residuals, not verified", stopped.status)
+T.raises(function() solve { method = "mpec", complementarity = "exact" } end,
+         "a bad complementarity names the field", "solve", "complementarity")
+T.raises(function() solve { method = "assoc", start = "cold" } end,
+         "start without method mpec is refused", "'start'", "mpec")
+
+-- compare{} on W4: three methods, each answer's residuals below 1e-6.
+build(walls.W4)
+local c = compare {}
+T.eq(#c.rows, 3, "compare{}: three methods by default")
+local all = true
+for _, row in ipairs(c.rows) do
+  local e = row.result.residuals
+  all = all and e and e.equilibrium < 1e-6 and e.yield < 1e-6 and e.complementarity < 1e-6
+end
+T.ok(all, "compare{} on W4: equilibrium, yield and complementarity below 1e-6 in every row")
+T.near(c.rows[3].result.alpha, c.rows[2].result.alpha, 1e-3,
+       "compare{} on W4: mpec and the sequence of LPs agree to 1e-3")
+T.near(c.rows[1].agreement, 1, 1e-12, "compare{}: the first row agrees with itself")
+T.ok(tostring(c):find("seqlp", 1, true) and tostring(c):find("mpec", 1, true),
+     "compare{}: the printed table names the methods")
+T.done()
