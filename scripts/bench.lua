@@ -1,28 +1,36 @@
 -- bench.lua ENGINE N [TIME_LIMIT]: one benchmark run with the LP engine
 -- ENGINE ("ipm", "simplex" or "auto"; "seqlp": the non-associative solve,
--- one start, engine auto), a running-bond wall of N full
--- blocks per course and N courses, the half-block course first (N = 32, 50,
--- 100 give 1,040, 2,525 and 10,050 blocks), mu = 0.65, horizontal load
--- proportional to weight.  Prints one line of key=value pairs.
+-- one start, engine auto; "mpec": the direct solve by Ipopt, its defaults),
+-- a running-bond wall of N full blocks per course and N courses, the
+-- half-block course first (N = 32, 50, 100 give 1,040, 2,525 and 10,050
+-- blocks; N = 12, 162), or N = W1, W4, W5 (tests/lua/walls.lua); mu = 0.65,
+-- horizontal load proportional to weight.  Prints one line of key=value
+-- pairs.
+package.path = (arg[0]:match("(.*/)") or "./") .. "../tests/lua/?.lua;" .. package.path
 local engine, n, limit = arg[1], tonumber(arg[2]), tonumber(arg[3])
 local clock = blocklim.clock
 local t0 = clock()
 model { mu = 0.65 }
-local E, U = { .5 }, {}
-for _ = 1, n - 1 do E[#E + 1] = 1 end
-E[#E + 1] = .5
-for _ = 1, n do U[#U + 1] = 1 end
-local courses = {}
-for c = 1, n do courses[c] = c % 2 == 1 and E or U end
-wall { courses = courses, unit = { 0.4, 0.175 } }
+if n then
+  local E, U = { .5 }, {}
+  for _ = 1, n - 1 do E[#E + 1] = 1 end
+  E[#E + 1] = .5
+  for _ = 1, n do U[#U + 1] = 1 end
+  local courses = {}
+  for c = 1, n do courses[c] = c % 2 == 1 and E or U end
+  wall { courses = courses, unit = { 0.4, 0.175 } }
+else
+  wall { courses = require("walls")[arg[2]], unit = { 0.4, 0.175 } }
+end
 local t1 = clock()
-local r = engine == "seqlp" and solve { flow = "nonassociative", time_limit = limit }
+local r = engine == "seqlp" and solve { flow = "nonassociative", time_limit = limit, progress = false }
+  or engine == "mpec" and solve { method = "mpec", time_limit = limit, progress = false }
   or solve { flow = "associative", lp = engine, time_limit = limit }
 local t = r.timings
-print(("method=%s n=%d blocks=%d interfaces=%d rows=%d columns=%d lp=%s lps=%d iterations=%d factor_nnz=%.0f status=%s "
+print(("method=%s n=%s blocks=%d interfaces=%d rows=%d columns=%d lp=%s lps=%d iterations=%d factor_nnz=%.0f status=%s "
   .. "alpha=%.8g verified=%s generate=%.3f detection=%.3f assembly=%.3f solve=%.3f "
   .. "verification=%.3f total=%.3f")
-  :format(r.method, n, r.size.blocks, r.size.interfaces, r.size.rows, r.size.columns, r.lp, r.lps or 1, r.iterations,
+  :format(r.method, arg[2], r.size.blocks, r.size.interfaces, r.size.rows, r.size.columns, r.lp, r.lps or 1, r.iterations,
           r.size.factor_nnz,
           r.status:gsub(" ", "_"), r.alpha, tostring(r.verified), t1 - t0, t.detection,
           t.assembly, t.solve, t.verification, t1 - t0 + t.total))

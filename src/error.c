@@ -1,5 +1,7 @@
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE /* RTLD_DEFAULT */
 #include "error.h"
+
+#include <dlfcn.h>
 
 #include <signal.h>
 #include <stdarg.h>
@@ -28,4 +30,13 @@ double bl_clock(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void bl_one_thread(void)
+{
+    /* zero active OpenMP levels: every region runs on the calling thread */
+    void (*max_levels)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "omp_set_max_active_levels");
+    void (*blas_threads)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
+    if (max_levels) max_levels(0);
+    if (blas_threads) blas_threads(1);
 }

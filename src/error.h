@@ -22,6 +22,15 @@ void bl_interrupt_request(void);
 void bl_interrupt_clear(void);
 int bl_interrupt_pending(void);
 
+/* Runs the numerical libraries on the calling thread only.  Debian's
+ * CHOLMOD opens OpenMP regions of a fixed 4 threads in every supernodal
+ * factorization, and OpenBLAS threads every BLAS call (also MUMPS's, under
+ * Ipopt); on the 2-core machines this runs on, the threads cost more in
+ * wake-ups than they give (10,050 blocks: 12.0 s with both, 5.6 s with
+ * neither; doc/performance.md).  Looked up at run time, so that nothing
+ * breaks where these libraries are built differently. */
+void bl_one_thread(void);
+
 /* Wall-clock seconds from an arbitrary origin, for the timings of a result. */
 double bl_clock(void);
 

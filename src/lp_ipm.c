@@ -14,8 +14,6 @@
  *     by CHOLMOD (supernodal, METIS ordering): analysed once, refactored
  *     numerically every iteration.
  */
-#define _GNU_SOURCE /* RTLD_DEFAULT */
-#include <dlfcn.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -215,24 +213,9 @@ static int build(ipm *p, bl_error *err)
     return permute_rows(p) ? bl_error_set(err, "lp: out of memory") : 0;
 }
 
-/* Debian's CHOLMOD opens OpenMP regions of a fixed 4 threads inside every
- * supernodal factorization, and OpenBLAS its own threads for every BLAS
- * call; on the 2-core machines this runs on, the threads cost more in
- * wake-ups than they give (10,050 blocks: 12.0 s with both, 5.6 s with
- * neither; doc/performance.md).  Zero active OpenMP levels makes every
- * region run on the calling thread.  Looked up at run time, so that
- * nothing breaks where these libraries are built differently. */
-static void one_thread(void)
-{
-    void (*max_levels)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "omp_set_max_active_levels");
-    void (*blas_threads)(int) = (void (*)(int))dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
-    if (max_levels) max_levels(0);
-    if (blas_threads) blas_threads(1);
-}
-
 static void *create(const bl_lp_problem *pr, const bl_lp_settings *s, bl_error *err)
 {
-    one_thread();
+    bl_one_thread();
     ipm *p = calloc(1, sizeof *p);
     if (!p) {
         bl_error_set(err, "lp: out of memory");
