@@ -1,12 +1,31 @@
--- mpec_study.lua [WALL ...]: the direct solve (method "mpec") of the
--- benchmark walls (tests/lua/walls.lua; default W4 and W5) for every way of
--- handling complementarity and every start, against the sequence of LPs
--- (doc/mpec.md).  One row per run: alpha, verified, Ipopt's outcome and
--- iterations, the final sum of complementary products, time.
--- Run from the top directory: build/blocklim scripts/mpec_study.lua W4 W5
+-- mpec_study.lua [penalty] [WALL ...]: the direct solve (method "mpec") of
+-- the benchmark walls (tests/lua/walls.lua; default W4 and W5) for every way
+-- of handling complementarity and every start, against the sequence of LPs
+-- (doc/mpec.md); with "penalty" first, the penalty weight 1, 10, 100 and
+-- 1000 from the default start instead.  One row per run: alpha, verified,
+-- Ipopt's outcome and iterations, the final sum of complementary products,
+-- time.  Run from the top directory: build/blocklim scripts/mpec_study.lua W4 W5
 package.path = "tests/lua/?.lua;" .. package.path
 local walls = require "walls"
-local names = #arg > 0 and arg or { "W4", "W5" }
+local sweep = arg[1] == "penalty"
+local names = { table.unpack(arg, sweep and 2 or 1) }
+if #names == 0 then names = { "W4", "W5" } end
+
+if sweep then
+  print(("%-5s %6s %9s %-9s %-27s %6s %9s %8s"):format("wall", "rho", "alpha", "verified", "Ipopt",
+    "iter.", "products", "time s"))
+  for _, name in ipairs(names) do
+    model { mu = 0.65 }
+    wall { courses = walls[name], unit = { 0.4, 0.175 } }
+    for _, rho in ipairs { 1, 10, 100, 1000 } do
+      local r = solve { method = "mpec", penalty = rho, progress = false }
+      print(("%-5s %6g %9.6f %-9s %-27s %6d %9.1e %8.2f"):format(name, rho, r.alpha,
+        tostring(r.verified), r.ipopt.status, r.iterations, r.ipopt.pairs, r.timings.total))
+    end
+  end
+  return
+end
+
 for _, name in ipairs(names) do
   model { mu = 0.65 }
   wall { courses = walls[name], unit = { 0.4, 0.175 } }
