@@ -278,7 +278,8 @@ static void layout(pic *P, const bl_solution *s, int width)
         P->y0 = P->top + box[3] * P->sc;
     }
     const char *name = bl_status_name(s->status);
-    snprintf(P->caption, sizeof P->caption, "alpha = %.5g  (%s)", s->alpha, name ? name : "?");
+    snprintf(P->caption, sizeof P->caption, "alpha = %.5g  (%s, %s flow, %s%s)", s->alpha,
+             name ? name : "?", s->flow, s->method, s->verified ? ", verified" : "");
     P->has_legend = P->m && P->k > 0.0;
 
     /* text widths need a cairo context; a 1x1 image gives the same metrics
