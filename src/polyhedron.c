@@ -1,0 +1,341 @@
+#include "polyhedron.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <libqhull_r/qhull_ra.h>
+
+double bl_v3_norm(bl_vec3 a) { return sqrt(bl_v3_dot(a, a)); }
+
+int bl_polyhedron_make(bl_polyhedron *p, const bl_vec3 *v, int nv, const int *fs,
+                       const int *fi, int nf)
+{
+    memset(p, 0, sizeof *p);
+    p->v = malloc(((size_t)nv + 1) * sizeof *p->v);
+    p->fs = malloc(((size_t)nf + 1) * sizeof *p->fs);
+    p->fi = malloc(((size_t)fs[nf] + 1) * sizeof *p->fi);
+    if (!p->v || !p->fs || !p->fi) {
+        bl_polyhedron_free(p);
+        return -1;
+    }
+    memcpy(p->v, v, (size_t)nv * sizeof *v);
+    memcpy(p->fs, fs, ((size_t)nf + 1) * sizeof *fs);
+    memcpy(p->fi, fi, (size_t)fs[nf] * sizeof *fi);
+    p->nv = nv;
+    p->nf = nf;
+    return 0;
+}
+
+int bl_polyhedron_copy(bl_polyhedron *dst, const bl_polyhedron *src)
+{
+    if (!src->v) {
+        memset(dst, 0, sizeof *dst);
+        return 0;
+    }
+    return bl_polyhedron_make(dst, src->v, src->nv, src->fs, src->fi, src->nf);
+}
+
+void bl_polyhedron_free(bl_polyhedron *p)
+{
+    free(p->v);
+    free(p->fs);
+    free(p->fi);
+    memset(p, 0, sizeof *p);
+}
+
+/* Newell's normal of face k: twice the area times the unit normal, for the
+ * face's vertex order. */
+static bl_vec3 newell(const bl_polyhedron *p, int k)
+{
+    bl_vec3 n = {0, 0, 0};
+    int a = p->fs[k], m = p->fs[k + 1] - a;
+    for (int i = 0; i < m; i++) {
+        bl_vec3 u = p->v[p->fi[a + i]], w = p->v[p->fi[a + (i + 1) % m]];
+        n.x += (u.y - w.y) * (u.z + w.z);
+        n.y += (u.z - w.z) * (u.x + w.x);
+        n.z += (u.x - w.x) * (u.y + w.y);
+    }
+    return n;
+}
+
+bl_vec3 bl_polyhedron_face_normal(const bl_polyhedron *p, int k, double *area)
+{
+    bl_vec3 n = newell(p, k);
+    double len = bl_v3_norm(n);
+    if (area) *area = 0.5 * len;
+    return len > 0.0 ? bl_v3_scale(n, 1.0 / len) : n;
+}
+
+static void reverse_face(bl_polyhedron *p, int k)
+{
+    for (int i = p->fs[k], j = p->fs[k + 1] - 1; i < j; i++, j--) {
+        int t = p->fi[i];
+        p->fi[i] = p->fi[j];
+        p->fi[j] = t;
+    }
+}
+
+/* An edge of a face, for matching faces along their edges. */
+typedef struct edge {
+    int lo, hi;   /* vertex indices, lo < hi */
+    int face;
+    int forward;  /* the face runs lo -> hi */
+} edge;
+
+static int edge_cmp(const void *x, const void *y)
+{
+    const edge *a = x, *b = y;
+    if (a->lo != b->lo) return a->lo < b->lo ? -1 : 1;
+    if (a->hi != b->hi) return a->hi < b->hi ? -1 : 1;
+    return a->face - b->face;
+}
+
+double bl_polyhedron_volume(const bl_polyhedron *p, bl_vec3 *centroid)
+{
+    bl_vec3 r = p->v[0], c = {0, 0, 0};
+    double vol = 0.0;
+    for (int k = 0; k < p->nf; k++) {
+        int a = p->fs[k], m = p->fs[k + 1] - a;
+        bl_vec3 u = bl_v3_sub(p->v[p->fi[a]], r);
+        for (int i = 1; i + 1 < m; i++) {
+            bl_vec3 w = bl_v3_sub(p->v[p->fi[a + i]], r), z = bl_v3_sub(p->v[p->fi[a + i + 1]], r);
+            double t = bl_v3_dot(u, bl_v3_cross(w, z)) / 6.0;
+            vol += t;
+            c = bl_v3_add(c, bl_v3_scale(bl_v3_add(u, bl_v3_add(w, z)), t / 4.0));
+        }
+    }
+    if (centroid) *centroid = vol != 0.0 ? bl_v3_add(r, bl_v3_scale(c, 1.0 / vol)) : r;
+    return vol;
+}
+
+void bl_polyhedron_bbox(const bl_polyhedron *p, double box[6])
+{
+    box[0] = box[1] = box[2] = INFINITY;
+    box[3] = box[4] = box[5] = -INFINITY;
+    for (int i = 0; i < p->nv; i++) {
+        box[0] = fmin(box[0], p->v[i].x);
+        box[1] = fmin(box[1], p->v[i].y);
+        box[2] = fmin(box[2], p->v[i].z);
+        box[3] = fmax(box[3], p->v[i].x);
+        box[4] = fmax(box[4], p->v[i].y);
+        box[5] = fmax(box[5], p->v[i].z);
+    }
+}
+
+int bl_polyhedron_check(bl_polyhedron *p, double tol, int id, bl_error *err)
+{
+    if (p->nf < 4) return bl_error_set(err, "block %d: a polyhedron needs at least 4 faces, got %d", id, p->nf);
+    for (int i = 0; i < p->nv; i++)
+        if (!isfinite(p->v[i].x) || !isfinite(p->v[i].y) || !isfinite(p->v[i].z))
+            return bl_error_set(err, "block %d: vertex %d is not a finite point", id, i + 1);
+    /* faces: enough distinct vertices in range, flat */
+    for (int k = 0; k < p->nf; k++) {
+        int a = p->fs[k], m = p->fs[k + 1] - a;
+        if (m < 3)
+            return bl_error_set(err, "block %d: face %d has %d vertices, at least 3 needed", id,
+                                k + 1, m);
+        for (int i = 0; i < m; i++) {
+            int q = p->fi[a + i];
+            if (q < 0 || q >= p->nv)
+                return bl_error_set(err, "block %d: face %d names vertex %d, which does not exist",
+                                    id, k + 1, q + 1);
+            for (int j = i + 1; j < m; j++)
+                if (p->fi[a + j] == q)
+                    return bl_error_set(err, "block %d: face %d visits vertex %d twice", id,
+                                        k + 1, q + 1);
+        }
+        double area;
+        bl_vec3 n = bl_polyhedron_face_normal(p, k, &area);
+        if (!(area > tol * tol))
+            return bl_error_set(err, "block %d: face %d has zero area", id, k + 1);
+        bl_vec3 o = {0, 0, 0};
+        for (int i = 0; i < m; i++) o = bl_v3_add(o, p->v[p->fi[a + i]]);
+        o = bl_v3_scale(o, 1.0 / m);
+        for (int i = 0; i < m; i++) {
+            double d = bl_v3_dot(bl_v3_sub(p->v[p->fi[a + i]], o), n);
+            if (fabs(d) > tol)
+                return bl_error_set(err,
+                                    "block %d: face %d is not planar (vertex %d is %.3g off its "
+                                    "plane; tolerance %.3g)",
+                                    id, k + 1, p->fi[a + i] + 1, fabs(d), tol);
+        }
+    }
+
+    /* edges: each shared by exactly two faces */
+    int ne = p->fs[p->nf];
+    edge *e = malloc((size_t)ne * sizeof *e);
+    int *flip = malloc((size_t)p->nf * sizeof *flip), *queue = malloc((size_t)p->nf * sizeof *queue);
+    int *nb = malloc((size_t)ne * sizeof *nb); /* per edge entry: the other face's entry */
+    if (!e || !flip || !queue || !nb) {
+        free(e), free(flip), free(queue), free(nb);
+        return bl_error_set(err, "block %d: out of memory", id);
+    }
+    int rc = 0;
+    for (int k = 0, t = 0; k < p->nf; k++) {
+        int a = p->fs[k], m = p->fs[k + 1] - a;
+        for (int i = 0; i < m; i++, t++) {
+            int u = p->fi[a + i], w = p->fi[a + (i + 1) % m];
+            e[t] = (edge){u < w ? u : w, u < w ? w : u, k, u < w};
+        }
+    }
+    qsort(e, (size_t)ne, sizeof *e, edge_cmp);
+    for (int t = 0; t < ne && !rc;) {
+        int s = t;
+        while (t < ne && e[t].lo == e[s].lo && e[t].hi == e[s].hi) t++;
+        if (t - s == 1)
+            rc = bl_error_set(err,
+                              "block %d: the surface is open: edge %d-%d belongs to face %d only",
+                              id, e[s].lo + 1, e[s].hi + 1, e[s].face + 1);
+        else if (t - s > 2)
+            rc = bl_error_set(err, "block %d: edge %d-%d is shared by %d faces (%d, %d, %d...)", id,
+                              e[s].lo + 1, e[s].hi + 1, t - s, e[s].face + 1, e[s + 1].face + 1,
+                              e[s + 2].face + 1);
+        else if (e[s].face == e[s + 1].face)
+            rc = bl_error_set(err, "block %d: face %d runs along edge %d-%d twice", id,
+                              e[s].face + 1, e[s].lo + 1, e[s].hi + 1);
+        else {
+            nb[s] = s + 1;
+            nb[s + 1] = s;
+        }
+    }
+
+    /* orientation: faces agree with their neighbours when they run along a
+     * shared edge in opposite directions; turn the ones that do not */
+    if (!rc) {
+        /* per face, its edge entries: walk the sorted list once per face */
+        int *first = calloc((size_t)p->nf + 1, sizeof *first), *order = malloc((size_t)ne * sizeof *order);
+        if (!first || !order) {
+            rc = bl_error_set(err, "block %d: out of memory", id);
+        } else {
+            for (int t = 0; t < ne; t++) first[e[t].face + 1]++;
+            for (int k = 0; k < p->nf; k++) first[k + 1] += first[k];
+            int *fill = malloc(((size_t)p->nf + 1) * sizeof *fill);
+            if (!fill) {
+                rc = bl_error_set(err, "block %d: out of memory", id);
+            } else {
+                memcpy(fill, first, ((size_t)p->nf + 1) * sizeof *fill);
+                for (int t = 0; t < ne; t++) order[fill[e[t].face]++] = t;
+                free(fill);
+                for (int k = 0; k < p->nf; k++) flip[k] = -1;
+                flip[0] = 0;
+                int head = 0, tail = 0;
+                queue[tail++] = 0;
+                while (head < tail && !rc) {
+                    int f = queue[head++];
+                    for (int q = first[f]; q < first[f + 1] && !rc; q++) {
+                        int t = order[q], o = nb[t], g = e[o].face;
+                        /* same direction along the edge: one of the two is turned */
+                        int want = flip[f] ^ (e[t].forward == e[o].forward);
+                        if (flip[g] < 0) {
+                            flip[g] = want;
+                            queue[tail++] = g;
+                        } else if (flip[g] != want) {
+                            rc = bl_error_set(err,
+                                              "block %d: the surface cannot be oriented "
+                                              "(faces %d and %d at edge %d-%d)",
+                                              id, f + 1, g + 1, e[t].lo + 1, e[t].hi + 1);
+                        }
+                    }
+                }
+                if (!rc && tail < p->nf)
+                    for (int k = 0; k < p->nf; k++)
+                        if (flip[k] < 0) {
+                            rc = bl_error_set(err,
+                                              "block %d: the faces form more than one surface "
+                                              "(face %d is not connected to face 1)",
+                                              id, k + 1);
+                            break;
+                        }
+            }
+        }
+        free(first);
+        free(order);
+    }
+    if (!rc) {
+        for (int k = 0; k < p->nf; k++)
+            if (flip[k]) reverse_face(p, k);
+        double vol = bl_polyhedron_volume(p, NULL), surface = 0.0, a;
+        if (vol < 0.0)
+            for (int k = 0; k < p->nf; k++) reverse_face(p, k);
+        for (int k = 0; k < p->nf; k++) bl_polyhedron_face_normal(p, k, &a), surface += a;
+        /* thinner than tol: a slab of that surface and thickness */
+        if (!(fabs(vol) > tol * surface))
+            rc = bl_error_set(err, "block %d: the polyhedron has zero volume", id);
+    }
+    free(e);
+    free(flip);
+    free(queue);
+    free(nb);
+    return rc;
+}
+
+int bl_convex_hull(const bl_vec3 *pts, int n, int id, bl_polyhedron *out, bl_error *err)
+{
+    memset(out, 0, sizeof *out);
+    if (n < 4) return bl_error_set(err, "block %d: a convex hull needs at least 4 points, got %d", id, n);
+    coordT *xyz = malloc((size_t)n * 3 * sizeof *xyz);
+    int *map = malloc((size_t)n * sizeof *map);
+    FILE *quiet = fopen("/dev/null", "w");
+    if (!xyz || !map || !quiet) {
+        free(xyz), free(map);
+        if (quiet) fclose(quiet);
+        return bl_error_set(err, "block %d: out of memory", id);
+    }
+    for (int i = 0; i < n; i++) {
+        xyz[3 * i] = pts[i].x;
+        xyz[3 * i + 1] = pts[i].y;
+        xyz[3 * i + 2] = pts[i].z;
+        map[i] = -1;
+    }
+    qhT qh_qh, *qh = &qh_qh;
+    qh_zero(qh, quiet);
+    int rc = 0;
+    /* "qhull": merge coplanar facets into polygons; no output */
+    if (qh_new_qhull(qh, 3, n, xyz, False, (char *)"qhull", NULL, quiet)) {
+        rc = bl_error_set(err, "block %d: the points span no volume (all on one plane or line)",
+                          id);
+    } else {
+        int nf = 0, nfi = 0, nv = 0;
+        facetT *facet;
+        vertexT *vertex, **vertexp;
+        FORALLfacets {
+            nf++;
+            nfi += qh_setsize(qh, facet->vertices);
+        }
+        bl_vec3 *v = malloc((size_t)n * sizeof *v);
+        int *fs = malloc(((size_t)nf + 1) * sizeof *fs), *fi = malloc((size_t)nfi * sizeof *fi);
+        if (!v || !fs || !fi) {
+            rc = bl_error_set(err, "block %d: out of memory", id);
+        } else {
+            int k = 0, t = 0;
+            FORALLfacets {
+                setT *ring = qh_facet3vertex(qh, facet); /* in order around the facet */
+                fs[k++] = t;
+                FOREACHvertex_(ring) {
+                    int q = qh_pointid(qh, vertex->point);
+                    if (map[q] < 0) {
+                        map[q] = nv;
+                        v[nv++] = pts[q];
+                    }
+                    fi[t++] = map[q];
+                }
+                qh_settempfree(qh, &ring);
+            }
+            fs[k] = t;
+            if (bl_polyhedron_make(out, v, nv, fs, fi, nf))
+                rc = bl_error_set(err, "block %d: out of memory", id);
+        }
+        free(v);
+        free(fs);
+        free(fi);
+    }
+    int curlong, totlong;
+    qh_freeqhull(qh, !qh_ALL);
+    qh_memfreeshort(qh, &curlong, &totlong);
+    fclose(quiet);
+    free(xyz);
+    free(map);
+    return rc;
+}
