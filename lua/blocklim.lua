@@ -53,6 +53,7 @@ return function(core)
   M.wall = require("blocklim.wall")(M)
   M.arch = require("blocklim.arch")(M)
   require("blocklim.compare")(M)
+  require("blocklim.solid")(M)
 
   M.version = "0.1"
   M.clock = core.clock
@@ -60,7 +61,7 @@ return function(core)
   -- The names the program puts into _G (a script that requires the module
   -- from a stock Lua may do the same: require("blocklim").globals()).
   local exported = { "model", "block", "contacts", "interface", "load", "solve",
-                     "stats", "wall", "arch", "current", "last", "compare" }
+                     "stats", "wall", "arch", "current", "last", "compare", "box", "extrude" }
   function M.globals(env)
     env = env or _G
     for _, n in ipairs(exported) do env[n] = M[n] end

@@ -154,6 +154,34 @@ static bl_vec2 to_point(lua_State *L, const char *fn, const char *what)
     return bl_v2(c[0], c[1]);
 }
 
+/* The point {x, y, z} on the top of the stack (popped). */
+static bl_vec3 to_point3(lua_State *L, const char *fn, const char *what)
+{
+    if (!lua_istable(L, -1))
+        fail(L, "%s: %s must be a point {x, y, z}, got %s", fn, what, luaL_typename(L, -1));
+    if (lua_rawlen(L, -1) != 3)
+        fail(L, "%s: %s must be a point {x, y, z} of three numbers, got %d", fn, what,
+             (int)lua_rawlen(L, -1));
+    double c[3];
+    for (int i = 0; i < 3; i++) {
+        lua_geti(L, -1, i + 1);
+        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
+            fail(L, "%s: %s must be a point {x, y, z} of three finite numbers", fn, what);
+        c[i] = lua_tonumber(L, -1);
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    return bl_v3(c[0], c[1], c[2]);
+}
+
+/* In a 3D model, what is not built yet is refused with one sentence. */
+static void refuse_3d(lua_State *L, const bl_model *m, const char *fn)
+{
+    if (m->dim == 3)
+        fail(L, "%s: not available in 3D models yet (3D blocks can be built and inspected: "
+                "block, box, extrude, stats, block_info)", fn);
+}
+
 static int point_field(lua_State *L, int idx, const char *fn, const char *f, bl_vec2 *out)
 {
     if (!field(L, idx, f)) return 0;
@@ -238,6 +266,17 @@ static void push_pair(lua_State *L, double a, double b)
 
 static void push_point(lua_State *L, bl_vec2 p) { push_pair(L, p.x, p.y); }
 
+static void push_triple(lua_State *L, bl_vec3 p)
+{
+    lua_createtable(L, 3, 0);
+    lua_pushnumber(L, p.x);
+    lua_rawseti(L, -2, 1);
+    lua_pushnumber(L, p.y);
+    lua_rawseti(L, -2, 2);
+    lua_pushnumber(L, p.z);
+    lua_rawseti(L, -2, 3);
+}
+
 /* ---- model -------------------------------------------------------------- */
 
 static int model_new(lua_State *L)
@@ -246,8 +285,10 @@ static int model_new(lua_State *L)
                                          "thickness", "gravity", NULL};
     check_fields(L, 1, "model", fields, 0);
     double dim = number_field(L, 1, "model", "dim", 2, POSITIVE);
-    if (dim != 2)
-        fail(L, "model: field 'dim' must be 2 (3D models are not built yet), got %g", dim);
+    if (dim != 2 && dim != 3) fail(L, "model: field 'dim' must be 2 or 3, got %g", dim);
+    if (dim == 3 && (field_given(L, 1, "thickness") || field_given(L, 1, "gravity")))
+        fail(L, "model: fields 'thickness' and 'gravity' are for 2D models (a 3D block is "
+                "solid; gravity is -z)");
     const char *name = "";
     if (field(L, 1, "name")) {
         if (lua_type(L, -1) != LUA_TSTRING)
@@ -269,6 +310,7 @@ static int model_new(lua_State *L)
     *p = bl_model_new();
     if (!*p) return fail(L, "model: out of memory");
     bl_model *m = *p;
+    m->dim = (int)dim;
     snprintf(m->name, sizeof m->name, "%s", name);
     m->mu = mu;
     m->cohesion = c;
@@ -300,11 +342,86 @@ static int model_tostring(lua_State *L)
     return 1;
 }
 
+/* block{} in a 3D model: vertices {x, y, z} and faces (lists of vertex
+ * numbers), or points whose convex hull is the block. */
+static int block_3d(lua_State *L, bl_model *m)
+{
+    if (field_given(L, 2, "thickness"))
+        return fail(L, "block: field 'thickness' is for 2D models; a 3D block is solid");
+    int hull = field_given(L, 2, "points");
+    if (hull == (field_given(L, 2, "vertices") || field_given(L, 2, "faces")))
+        return fail(L, "block: a 3D block needs 'vertices' and 'faces', or 'points' (its convex "
+                       "hull)");
+    const char *list = hull ? "points" : "vertices";
+    field(L, 2, list);
+    if (!lua_istable(L, -1))
+        return fail(L, "block: field '%s' must be a list of points {x, y, z}, got %s", list,
+                    luaL_typename(L, -1));
+    int nv = (int)lua_rawlen(L, -1), vt = lua_gettop(L);
+    if (nv < 4) return fail(L, "block: field '%s' needs at least 4 points, got %d", list, nv);
+    bl_vec3 *v = lua_newuserdatauv(L, (size_t)nv * sizeof *v, 0); /* scratch, owned by Lua */
+    for (int i = 0; i < nv; i++) {
+        char what[64];
+        snprintf(what, sizeof what, "field '%s' point %d", list, i + 1);
+        lua_geti(L, vt, i + 1);
+        v[i] = to_point3(L, "block", what);
+    }
+    int support = boolean_field(L, 2, "block", "support", 0);
+    double rho = number_field(L, 2, "block", "density", 0.0, POSITIVE);
+    bl_polyhedron solid;
+    bl_error err;
+    if (hull) {
+        if (bl_convex_hull(v, nv, m->nblocks + 1, &solid, &err)) return fail(L, "%s", err.msg);
+    } else {
+        field(L, 2, "faces");
+        if (!lua_istable(L, -1))
+            return fail(L, "block: field 'faces' must be a list of faces (lists of vertex "
+                           "numbers), got %s", luaL_typename(L, -1));
+        int nf = (int)lua_rawlen(L, -1), ft = lua_gettop(L), total = 0;
+        for (int k = 1; k <= nf; k++) {
+            if (lua_geti(L, ft, k) != LUA_TTABLE)
+                return fail(L, "block: field 'faces' face %d must be a list of vertex numbers, "
+                               "got %s", k, luaL_typename(L, -1));
+            total += (int)lua_rawlen(L, -1);
+            lua_pop(L, 1);
+        }
+        int *fs = lua_newuserdatauv(L, ((size_t)nf + 1) * sizeof *fs, 0);
+        int *fi = lua_newuserdatauv(L, ((size_t)total + 1) * sizeof *fi, 0);
+        fs[0] = 0;
+        for (int k = 1, t = 0; k <= nf; k++) {
+            lua_geti(L, ft, k);
+            int len = (int)lua_rawlen(L, -1);
+            for (int i = 1; i <= len; i++, t++) {
+                lua_geti(L, -1, i);
+                lua_Number q = lua_tonumber(L, -1);
+                if (!lua_isinteger(L, -1) && (lua_type(L, -1) != LUA_TNUMBER || q != floor(q)))
+                    return fail(L, "block: field 'faces' face %d entry %d must be a vertex "
+                                   "number, got %s", k, i, luaL_typename(L, -1));
+                if (q < 1 || q > nv)
+                    return fail(L, "block: field 'faces' face %d names vertex %g; there are %d",
+                                k, q, nv);
+                fi[t] = (int)q - 1;
+                lua_pop(L, 1);
+            }
+            fs[k] = fs[k - 1] + len;
+            lua_pop(L, 1);
+        }
+        if (bl_polyhedron_make(&solid, v, nv, fs, fi, nf)) return fail(L, "block: out of memory");
+    }
+    if (bl_model_add_solid(m, &solid, support, rho, &err)) return fail(L, "%s", err.msg);
+    lua_pushinteger(L, m->nblocks);
+    return 1;
+}
+
 static int model_block(lua_State *L)
 {
-    static const char *const fields[] = {"vertices", "support", "density", "thickness", NULL};
+    static const char *const fields[] = {"vertices", "support", "density", "thickness",
+                                         "faces",    "points",  NULL};
     bl_model *m = check_model(L, 1);
     check_fields(L, 2, "block", fields, 0);
+    if (m->dim == 3) return block_3d(L, m);
+    if (field_given(L, 2, "faces") || field_given(L, 2, "points"))
+        return fail(L, "block: fields 'faces' and 'points' are for 3D models (model{ dim = 3 })");
     if (!field(L, 2, "vertices"))
         return fail(L, "block: field 'vertices' is missing (a list of points {x, y})");
     if (!lua_istable(L, -1))
@@ -334,6 +451,7 @@ static int model_contacts(lua_State *L)
 {
     static const char *const fields[] = {"tol", "gap", NULL};
     bl_model *m = check_model(L, 1);
+    refuse_3d(L, m, "contacts");
     opt_table(L, 2);
     check_fields(L, 2, "contacts", fields, 0);
     double tol = number_field(L, 2, "contacts", "tol", m->contact_tol, NONNEG);
@@ -360,6 +478,7 @@ static int model_interface(lua_State *L)
 {
     static const char *const fields[] = {"mu", "cohesion", "points", NULL};
     bl_model *m = check_model(L, 1);
+    refuse_3d(L, m, "interface");
     check_fields(L, 2, "interface", fields, 2);
     bl_joint_spec s = {0};
     lua_geti(L, 2, 1);
@@ -411,6 +530,7 @@ static int model_load(lua_State *L)
     static const char *const dead_choices[] = {"self-weight", "none", NULL};
     static const char *const live_choices[] = {"horizontal", "none", NULL};
     bl_model *m = check_model(L, 1);
+    refuse_3d(L, m, "load");
     check_fields(L, 2, "load", fields, 0);
     int kinds[2] = {-1, -1}; /* dead, live: choice index, 2 = point load, -1 = absent */
     bl_point_load pl[2] = {{0}, {0}};
@@ -480,6 +600,15 @@ static int model_stats(lua_State *L)
 {
     bl_model *m = check_model(L, 1);
     bl_error err;
+    if (m->dim == 3) { /* no interfaces in 3D yet */
+        int nfree = bl_model_free_blocks(m);
+        lua_createtable(L, 0, 4);
+        set_integer(L, "dim", 3);
+        set_integer(L, "blocks", nfree);
+        set_integer(L, "supports", m->nblocks - nfree);
+        set_number(L, "size", bl_model_size(m));
+        return 1;
+    }
     if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
     int nfree = bl_model_free_blocks(m);
     double tol, gap;
@@ -494,11 +623,44 @@ static int model_stats(lua_State *L)
     return 1;
 }
 
+/* model:dim() -> 2 or 3 */
+static int model_dim(lua_State *L)
+{
+    lua_pushinteger(L, check_model(L, 1)->dim);
+    return 1;
+}
+
 /* model:block_info(i) -> { vertices, centroid, area, weight, support } */
 static int model_block_info(lua_State *L)
 {
     bl_model *m = check_model(L, 1);
     const bl_block *b = &m->blocks[block_index(L, m, 2, "block_info", "argument 1")];
+    if (m->dim == 3) {
+        const bl_polyhedron *p = &b->solid;
+        lua_createtable(L, 0, 6);
+        lua_createtable(L, p->nv, 0);
+        for (int i = 0; i < p->nv; i++) {
+            push_triple(L, p->v[i]);
+            lua_rawseti(L, -2, i + 1);
+        }
+        lua_setfield(L, -2, "vertices");
+        lua_createtable(L, p->nf, 0);
+        for (int k = 0; k < p->nf; k++) {
+            lua_createtable(L, p->fs[k + 1] - p->fs[k], 0);
+            for (int t = p->fs[k]; t < p->fs[k + 1]; t++) {
+                lua_pushinteger(L, p->fi[t] + 1);
+                lua_rawseti(L, -2, t - p->fs[k] + 1);
+            }
+            lua_rawseti(L, -2, k + 1);
+        }
+        lua_setfield(L, -2, "faces");
+        push_triple(L, b->centroid3);
+        lua_setfield(L, -2, "centroid");
+        set_number(L, "volume", b->volume);
+        set_number(L, "weight", b->weight);
+        set_boolean(L, "support", b->support);
+        return 1;
+    }
     lua_createtable(L, 0, 5);
     lua_createtable(L, b->nv, 0);
     for (int i = 0; i < b->nv; i++) {
@@ -686,6 +848,7 @@ static int model_solve(lua_State *L)
     static const char *const starts_from[] = {"cold", "assoc", "seqlp", NULL};
     enum { ASSOC, SEQLP, MPEC };
     bl_model *m = check_model(L, 1);
+    refuse_3d(L, m, "solve");
     opt_table(L, 2);
     check_fields(L, 2, "solve", fields, 0);
     /* By default, the non-associative answer (the associative one beside
@@ -851,7 +1014,7 @@ int luaopen_blocklim(lua_State *L)
     static const luaL_Reg model_methods[] = {
         {"block", model_block},         {"contacts", model_contacts}, {"interface", model_interface},
         {"load", model_load},           {"solve", model_solve},       {"stats", model_stats},
-        {"block_info", model_block_info}, {NULL, NULL}};
+        {"block_info", model_block_info}, {"dim", model_dim}, {NULL, NULL}};
     static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw},
                                      {"clock", core_clock}, {"last", core_last},
                                      {NULL, NULL}};

@@ -16,13 +16,17 @@ bl_model *bl_model_new(void)
     m->self_weight = 1;
     m->live_weight = 1;
     m->live_dir = bl_v2(1.0, 0.0);
+    m->dim = 2;
     return m;
 }
 
 void bl_model_free(bl_model *m)
 {
     if (!m) return;
-    for (int i = 0; i < m->nblocks; i++) free(m->blocks[i].v);
+    for (int i = 0; i < m->nblocks; i++) {
+        free(m->blocks[i].v);
+        bl_polyhedron_free(&m->blocks[i].solid);
+    }
     free(m->blocks);
     free(m->interfaces);
     free(m->joints);
@@ -54,9 +58,13 @@ bl_model *bl_model_copy(const bl_model *m)
     int ok = (!m->nblocks || c->blocks) && (!m->ninterfaces || c->interfaces) &&
              (!m->njoints || c->joints) && (!m->nloads || c->loads);
     for (int i = 0; ok && i < m->nblocks; i++) {
-        c->blocks[i].v = dup_array(m->blocks[i].v, (size_t)m->blocks[i].nv, sizeof(bl_vec2));
-        if (!c->blocks[i].v) {
-            for (int j = i; j < m->nblocks; j++) c->blocks[j].v = NULL;
+        const bl_block *b = &m->blocks[i];
+        c->blocks[i].v = dup_array(b->v, (size_t)b->nv, sizeof(bl_vec2));
+        if ((b->nv && !c->blocks[i].v) || bl_polyhedron_copy(&c->blocks[i].solid, &b->solid)) {
+            for (int j = i; j < m->nblocks; j++) {
+                if (j > i || !c->blocks[i].v) c->blocks[j].v = NULL;
+                memset(&c->blocks[j].solid, 0, sizeof c->blocks[j].solid);
+            }
             ok = 0;
         }
     }
@@ -120,6 +128,7 @@ int bl_model_add_block(bl_model *m, const bl_vec2 *v, int nv, int support,
         area = -area;
     }
     bl_block *b = &m->blocks[m->nblocks++];
+    memset(b, 0, sizeof *b);
     b->nv = nv;
     b->v = copy;
     b->support = support;
@@ -129,6 +138,36 @@ int bl_model_add_block(bl_model *m, const bl_vec2 *v, int nv, int support,
     b->centroid = bl_polygon_centroid(copy, nv);
     b->weight = b->density * b->area * b->thickness;
     memcpy(b->box, box, sizeof box);
+    m->contacts_valid = 0;
+    return 0;
+}
+
+int bl_model_add_solid(bl_model *m, bl_polyhedron *solid, int support, double density,
+                       bl_error *err)
+{
+    int id = m->nblocks + 1;
+    double box[6];
+    bl_polyhedron_bbox(solid, box);
+    double size = sqrt((box[3] - box[0]) * (box[3] - box[0]) + (box[4] - box[1]) * (box[4] - box[1]) +
+                       (box[5] - box[2]) * (box[5] - box[2]));
+    /* (a vertex that is not finite is reported before the tolerance is used) */
+    if (bl_polyhedron_check(solid, 1e-9 * size, id, err)) {
+        bl_polyhedron_free(solid);
+        return -1;
+    }
+    if (RESERVE(m->blocks, m->cap_blocks, m->nblocks + 1)) {
+        bl_polyhedron_free(solid);
+        return bl_error_set(err, "block %d: out of memory", id);
+    }
+    bl_block *b = &m->blocks[m->nblocks++];
+    memset(b, 0, sizeof *b);
+    b->solid = *solid;
+    memset(solid, 0, sizeof *solid);
+    b->support = support;
+    b->density = density > 0.0 ? density : m->density;
+    b->volume = bl_polyhedron_volume(&b->solid, &b->centroid3);
+    b->weight = b->density * b->volume;
+    memcpy(b->box3, box, sizeof box);
     m->contacts_valid = 0;
     return 0;
 }
@@ -161,6 +200,16 @@ int bl_model_add_point_load(bl_model *m, const bl_point_load *l, bl_error *err)
 double bl_model_size(const bl_model *m)
 {
     if (m->nblocks == 0) return 0.0;
+    if (m->dim == 3) {
+        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (int i = 0; i < m->nblocks; i++)
+            for (int d = 0; d < 3; d++) {
+                lo[d] = fmin(lo[d], m->blocks[i].box3[d]);
+                hi[d] = fmax(hi[d], m->blocks[i].box3[d + 3]);
+            }
+        return sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    }
     double box[4];
     memcpy(box, m->blocks[0].box, sizeof box);
     for (int i = 1; i < m->nblocks; i++) {

@@ -1,4 +1,8 @@
-/* model.h - a 2D assembly of rigid blocks: blocks, interfaces, loads, material.
+/* model.h - an assembly of rigid blocks: blocks, interfaces, loads, material.
+ *
+ * A model is 2D (blocks are polygons with an out-of-plane thickness) or 3D
+ * (blocks are polyhedra).  In 3D, blocks, their volumes, centroids and
+ * weights are built; interfaces, loads and solves are 2D only so far.
  *
  * Blocks are numbered from 0 in the order they are added (the Lua side shows
  * them from 1).  A support block is fixed and carries no unknowns.  The model
@@ -8,17 +12,23 @@
 
 #include "error.h"
 #include "geometry.h"
+#include "polyhedron.h"
 
 typedef struct bl_block {
     int nv;
-    bl_vec2 *v;          /* owned; counter-clockwise */
+    bl_vec2 *v;          /* owned; counter-clockwise (2D) */
     int support;
     double density;      /* weight per unit volume */
-    double thickness;    /* out of plane */
+    double thickness;    /* out of plane (2D) */
     double area;
     bl_vec2 centroid;
-    double weight;       /* density * area * thickness */
-    double box[4];       /* bounding box */
+    double weight;       /* density * area * thickness, or density * volume */
+    double box[4];       /* bounding box (2D) */
+    /* 3D */
+    bl_polyhedron solid; /* owned, faces outward */
+    double volume;
+    bl_vec3 centroid3;
+    double box3[6];
 } bl_block;
 
 /* An interface joins block a (minus side) and block b (plus side).  Its unit
@@ -53,6 +63,7 @@ typedef struct bl_point_load {
 
 typedef struct bl_model {
     char name[64];
+    int dim;             /* 2 or 3 */
     /* material defaults, applied to blocks and interfaces as they are made */
     double mu, cohesion, density, thickness;
     bl_vec2 gravity;     /* unit vector of the dead load (before tilt) */
@@ -88,6 +99,13 @@ bl_model *bl_model_copy(const bl_model *m);
  * density or thickness <= 0 takes the model's default. */
 int bl_model_add_block(bl_model *m, const bl_vec2 *v, int nv, int support,
                        double density, double thickness, bl_error *err);
+
+/* Adds a 3D block, taking over *solid (emptied, also on failure): checks
+ * it (bl_polyhedron_check, tolerance 1e-9 of its size for planarity,
+ * orientation fixed), computes volume, centroid and weight.  density <= 0
+ * takes the model's default. */
+int bl_model_add_solid(bl_model *m, bl_polyhedron *solid, int support, double density,
+                       bl_error *err);
 
 /* Appends an interface (used by contact detection). */
 int bl_model_add_interface(bl_model *m, const bl_interface *k, bl_error *err);

@@ -1,0 +1,92 @@
+-- solid.lua - 3D blocks from simple shapes, for models with dim = 3.
+--
+-- box{ size = {a, b, c}, at = {x, y, z}, support, density }: a box a long
+--   (x), b deep (y), c high (z) whose lowest face is centred at `at`.
+-- extrude{ polygon = {{u, v}, ...}, axis = "z", from = z0, to = z1,
+--   support, density }: a prism; the polygon lies in the plane across the
+--   axis ((x, y) for "z", (x, z) for "y", (y, z) for "x") and is swept
+--   from `from` to `to` along it.
+-- Both return the block number (block{ vertices, faces } underneath).
+return function(M)
+  -- level: 3 blames the caller of box or extrude when they call fail
+  -- themselves; their helpers pass 4
+  local function fail(fn, msg, level) error(fn .. ": " .. msg, level or 3) end
+
+  local function number_list(fn, t, k, n, positive)
+    local v = t[k]
+    if type(v) ~= "table" or #v ~= n then
+      fail(fn, ("field '%s' must be a list of %d numbers, got %s"):format(k, n, type(v)), 4)
+    end
+    for i = 1, n do
+      if type(v[i]) ~= "number" or v[i] ~= v[i] or math.abs(v[i]) == math.huge
+         or (positive and not (v[i] > 0)) then
+        fail(fn, ("field '%s' entry %d must be a %snumber, got %s"):format(k, i,
+             positive and "positive " or "finite ", tostring(v[i])), 4)
+      end
+    end
+    return v
+  end
+
+  local function check(fn, t, allowed)
+    if type(t) ~= "table" then fail(fn, "expects a table of named fields, got " .. type(t), 4) end
+    for k in pairs(t) do
+      if not allowed[k] then fail(fn, ("unknown field '%s'"):format(tostring(k)), 4) end
+    end
+    local m = M.current()
+    if not m then fail(fn, "no current model; start one with model{ dim = 3 }", 4) end
+    if m:dim() ~= 3 then fail(fn, "makes 3D blocks; start a model with model{ dim = 3 }", 4) end
+  end
+
+  -- A prism: the polygon's points at `from` (1..n) and at `to` (n+1..2n).
+  local function prism(polygon, place, from, to, t)
+    local v, faces, n = {}, {}, #polygon
+    for i, p in ipairs(polygon) do
+      v[i], v[n + i] = place(p[1], p[2], from), place(p[1], p[2], to)
+    end
+    local bottom, top = {}, {}
+    for i = 1, n do
+      bottom[i], top[i] = n + 1 - i, n + i
+      local j = i % n + 1
+      faces[#faces + 1] = { i, j, n + j, n + i }
+    end
+    faces[#faces + 1], faces[#faces + 2] = bottom, top
+    return M.block { vertices = v, faces = faces, support = t.support, density = t.density }
+  end
+
+  function M.box(t)
+    check("box", t, { size = true, at = true, support = true, density = true })
+    local s = number_list("box", t, "size", 3, true)
+    local at = t.at and number_list("box", t, "at", 3) or { 0, 0, 0 }
+    local a, b = s[1] / 2, s[2] / 2
+    return prism({ { -a, -b }, { a, -b }, { a, b }, { -a, b } },
+                 function(u, w, z) return { at[1] + u, at[2] + w, z } end, at[3], at[3] + s[3], t)
+  end
+
+  function M.extrude(t)
+    check("extrude", t, { polygon = true, axis = true, from = true, to = true, support = true,
+                          density = true })
+    local poly = t.polygon
+    if type(poly) ~= "table" or #poly < 3 then
+      fail("extrude", "field 'polygon' must be a list of at least 3 points {u, v}")
+    end
+    for i, p in ipairs(poly) do
+      if type(p) ~= "table" or type(p[1]) ~= "number" or type(p[2]) ~= "number" or #p ~= 2 then
+        fail("extrude", ("field 'polygon' point %d must be a point {u, v} of two numbers"):format(i))
+      end
+    end
+    local from, to = t.from or 0, t.to
+    if type(from) ~= "number" or type(to) ~= "number" or not (to > from) then
+      fail("extrude", "fields 'from' and 'to' must be numbers with to > from")
+    end
+    local axis = t.axis or "z"
+    local place = ({
+      z = function(u, w, c) return { u, w, c } end,
+      y = function(u, w, c) return { u, c, w } end,
+      x = function(u, w, c) return { c, u, w } end,
+    })[axis]
+    if not place then
+      fail("extrude", ("field 'axis' must be \"x\", \"y\" or \"z\", got %s"):format(tostring(axis)))
+    end
+    return prism(poly, place, from, to, t)
+  end
+end

@@ -1,0 +1,94 @@
+-- 3D blocks (model{ dim = 3 }): volumes, centroids and weights against
+-- closed forms, their invariance under rotation, and bad solids rejected
+-- with messages naming the block and face.  Tolerance 1e-12 relative: the
+-- volume is a sum of a few tetrahedra on data of order one.
+package.path = (arg[0]:match("(.*/)") or "./") .. "?.lua;" .. package.path
+local T = require "tap"
+
+local function info(i) return current():block_info(i) end
+local function near3(a, b, tol)
+  return math.abs(a[1] - b[1]) <= tol and math.abs(a[2] - b[2]) <= tol and math.abs(a[3] - b[3]) <= tol
+end
+
+model { dim = 3, density = 20 }
+local b = box { size = { 2, 1, 3 }, at = { 1, 2, 0 } }
+T.near(info(b).volume, 6, 1e-12, "box 2 x 1 x 3: volume 6")
+T.near(info(b).weight, 120, 1e-12, "box: weight = density x volume")
+T.ok(near3(info(b).centroid, { 1, 2, 1.5 }, 1e-12), "box: centroid above the point given, at half height")
+T.eq(#info(b).faces, 6, "box: six faces")
+
+-- an L of three unit squares swept 0.5 along y: volume 1.5, centroid (5/6, 1/4, 5/6)
+local e = extrude { polygon = { { 0, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } }, axis = "y",
+                    from = 0, to = 0.5 }
+T.near(info(e).volume, 1.5, 1e-12, "extruded L: volume = area x depth")
+T.ok(near3(info(e).centroid, { 5 / 6, 0.25, 5 / 6 }, 1e-12), "extruded L: centroid of the L, mid-depth")
+
+-- the convex hull of a unit cube's corners and points inside and on it
+local pts = {}
+for _, x in ipairs { 0, 1 } do for _, y in ipairs { 0, 1 } do for _, z in ipairs { 0, 1 } do
+  pts[#pts + 1] = { x + 5, y, z }
+end end end
+pts[#pts + 1], pts[#pts + 2] = { 5.5, 0.5, 0.5 }, { 5.5, 0, 0.5 }
+local h = block { points = pts }
+T.near(info(h).volume, 1, 1e-12, "convex hull of a cube's corners and inner points: volume 1")
+T.eq(#info(h).faces, 6, "convex hull: coplanar facets merged into six faces")
+
+-- a tetrahedron given with faces in mixed orientations: turned outward
+local t = block { vertices = { { 0, 0, 10 }, { 1, 0, 10 }, { 0, 1, 10 }, { 0, 0, 11 } },
+                  faces = { { 1, 2, 3 }, { 1, 2, 4 }, { 2, 3, 4 }, { 1, 4, 3 } } }
+T.near(info(t).volume, 1 / 6, 1e-12, "tetrahedron with faces in any order: volume 1/6")
+T.ok(near3(info(t).centroid, { 0.25, 0.25, 10.25 }, 1e-12), "tetrahedron: centroid at the mean of its corners")
+
+-- a box rotated about an arbitrary axis: the same volume, the centroid rotated
+local function rotate(p, axis, angle)
+  local n = math.sqrt(axis[1] ^ 2 + axis[2] ^ 2 + axis[3] ^ 2)
+  local k = { axis[1] / n, axis[2] / n, axis[3] / n }
+  local c, s = math.cos(angle), math.sin(angle)
+  local kp = k[1] * p[1] + k[2] * p[2] + k[3] * p[3]
+  local cross = { k[2] * p[3] - k[3] * p[2], k[3] * p[1] - k[1] * p[3], k[1] * p[2] - k[2] * p[1] }
+  local r = {}
+  for i = 1, 3 do r[i] = p[i] * c + cross[i] * s + k[i] * kp * (1 - c) end
+  return r
+end
+local ref = info(b)
+local rv = {}
+for i, p in ipairs(ref.vertices) do rv[i] = rotate(p, { 1, 2, 3 }, 0.7) end
+local r = block { vertices = rv, faces = ref.faces }
+T.near(info(r).volume, 6, 1e-12, "box rotated about (1, 2, 3): volume unchanged")
+T.ok(near3(info(r).centroid, rotate(ref.centroid, { 1, 2, 3 }, 0.7), 1e-12),
+     "box rotated: its centroid is the rotated centroid")
+T.eq(stats().blocks, 5, "stats() in 3D counts the blocks")
+T.eq(stats().dim, 3, "stats() says the model is 3D")
+
+-- bad solids: an error naming block and face; the model as it was
+local cube = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } }
+local faces = { { 1, 4, 3, 2 }, { 5, 6, 7, 8 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 4, 8, 7 }, { 4, 1, 5, 8 } }
+local function without(list, k)
+  local out = {}
+  for i, f in ipairs(list) do if i ~= k then out[#out + 1] = f end end
+  return out
+end
+T.raises(function() block { vertices = cube, faces = without(faces, 3) } end,
+         "a face left out: the surface is open", "block 6", "open", "edge")
+local bent = {}
+for i, p in ipairs(cube) do bent[i] = { p[1], p[2], p[3] } end
+bent[7][3] = 1.05
+T.raises(function() block { vertices = bent, faces = faces } end,
+         "a non-planar face is named", "block 6", "face 2", "not planar")
+local reversed = {}
+for i, f in ipairs(faces) do reversed[i] = { f[4], f[3], f[2], f[1] } end
+local inv = block { vertices = cube, faces = reversed }
+T.near(info(inv).volume, 1, 1e-12, "every face inverted: turned outward, volume 1")
+T.raises(function() block { points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 } } } end,
+         "points on one plane: no volume", "block 7", "no volume")
+T.raises(function() block { vertices = cube, faces = { { 1, 2, 3 }, { 1, 2, 9 } } } end,
+         "a face naming a missing vertex", "block", "face 2", "vertex 9")
+T.raises(function() block { vertices = cube, faces = faces, thickness = 1 } end,
+         "thickness is refused in 3D", "block", "'thickness'")
+T.eq(stats().blocks, 6, "after the errors the model has the blocks it had")
+T.raises(function() solve {} end, "solve says 3D models are not solved yet", "solve", "3D")
+T.raises(function() load { live = "horizontal" } end, "load says 3D is not built yet", "load", "3D")
+model {}
+T.raises(function() block { points = cube } end, "points in a 2D model are refused", "block", "3D")
+T.raises(function() box { size = { 1, 1, 1 } } end, "box in a 2D model is refused", "box", "dim = 3")
+T.done()
