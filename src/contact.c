@@ -1,4 +1,4 @@
-#include "contact.h"
+#include "contact3.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -8,7 +8,8 @@
 void bl_contact_tolerances(const bl_model *m, double *tol, double *gap)
 {
     double typical = 0.0;
-    for (int i = 0; i < m->nblocks; i++) typical += sqrt(m->blocks[i].area);
+    for (int i = 0; i < m->nblocks; i++)
+        typical += m->dim == 3 ? cbrt(m->blocks[i].volume) : sqrt(m->blocks[i].area);
     if (m->nblocks) typical /= m->nblocks;
     *tol = m->contact_tol > 0.0 ? m->contact_tol : 1e-8 * bl_model_size(m);
     *gap = m->contact_gap > 0.0 ? m->contact_gap : 1e-2 * typical;
@@ -16,11 +17,7 @@ void bl_contact_tolerances(const bl_model *m, double *tol, double *gap)
     if (*gap < *tol) *gap = *tol;
 }
 
-/* What the pair tests found that is wrong with the model. */
-typedef struct problems {
-    int noverlap, nnear;
-    char overlap[5][128], near[5][128];
-} problems;
+typedef bl_contact_problems problems;
 
 /* Edge i of block k: from v[i] to v[i+1]; outward normal (dy, -dx)/len since
  * polygons are counter-clockwise. */
@@ -147,16 +144,11 @@ static void list(char *buf, size_t size, char items[][128], int shown, int total
     if (total > shown && len < size) snprintf(buf + len, size - len, " and %d more", total - shown);
 }
 
-int bl_contact_detect(bl_model *m, bl_error *err)
+/* The 2D pair tests: a grid of cells about the mean block size, capped to
+ * O(n) cells, gives the candidate pairs.  Returns 0, or -1 with err set. */
+static int pairs2(bl_model *m, double tol, double gap, problems *pr, bl_error *err)
 {
-    double tol, gap;
-    bl_contact_tolerances(m, &tol, &gap);
-    m->ninterfaces = 0;
-    m->contacts_valid = 0;
     int n = m->nblocks;
-    if (n == 0) return bl_error_set(err, "contacts: the model has no blocks");
-
-    /* Grid of cells about the mean block size, capped to O(n) cells. */
     double box[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY}, mean = 0.0;
     for (int i = 0; i < n; i++) {
         const double *b = m->blocks[i].box;
@@ -173,7 +165,6 @@ int bl_contact_detect(bl_model *m, bl_error *err)
     int *range = malloc((size_t)n * 4 * sizeof *range);
     int *start = calloc((size_t)nx * ny + 1, sizeof *start);
     int *fill = NULL, *items = NULL, failed = 0;
-    problems pr = {0};
     if (!range || !start) goto oom;
     long total = 0;
     for (int i = 0; i < n; i++) {
@@ -218,13 +209,13 @@ int bl_contact_detect(bl_model *m, bl_error *err)
                 if (A->box[0] < B->box[2] - tol && B->box[0] < A->box[2] - tol &&
                     A->box[1] < B->box[3] - tol && B->box[1] < A->box[3] - tol &&
                     overlapping(A, B, tol)) {
-                    if (pr.noverlap < 5)
-                        snprintf(pr.overlap[pr.noverlap], sizeof pr.overlap[0],
+                    if (pr->noverlap < 5)
+                        snprintf(pr->overlap[pr->noverlap], sizeof pr->overlap[0],
                                  "blocks %d and %d", i + 1, j + 1);
-                    pr.noverlap++;
+                    pr->noverlap++;
                     continue;
                 }
-                pair_contacts(m, i, j, tol, gap, &pr, &failed, err);
+                pair_contacts(m, i, j, tol, gap, pr, &failed, err);
             }
         }
     }
@@ -232,8 +223,27 @@ int bl_contact_detect(bl_model *m, bl_error *err)
     free(start);
     free(fill);
     free(items);
-    range = start = fill = items = NULL;
-    if (failed) goto fail;
+    return failed ? -1 : 0;
+oom:
+    free(range);
+    free(start);
+    free(fill);
+    free(items);
+    return bl_error_set(err, "contacts: out of memory");
+}
+
+int bl_contact_detect(bl_model *m, bl_error *err)
+{
+    double tol, gap;
+    bl_contact_tolerances(m, &tol, &gap);
+    bl_model_clear_interfaces(m);
+    m->contacts_valid = 0;
+    int n = m->nblocks;
+    if (n == 0) return bl_error_set(err, "contacts: the model has no blocks");
+
+    problems pr = {0};
+    if (m->dim == 3 ? bl_contact_pairs3(m, tol, gap, &pr, err) : pairs2(m, tol, gap, &pr, err))
+        goto fail;
 
     char msg[sizeof err->msg] = "";
     if (pr.noverlap) {
@@ -243,8 +253,9 @@ int bl_contact_detect(bl_model *m, bl_error *err)
     }
     if (pr.nnear) {
         size_t len = strlen(msg);
-        snprintf(msg + len, sizeof msg - len, "%snear-miss (edges %.3g apart or less, "
-                 "neither touching within tol = %.3g): ", len ? "; " : "contacts: ", gap, tol);
+        snprintf(msg + len, sizeof msg - len, "%snear-miss (%s %.3g apart or less, "
+                 "neither touching within tol = %.3g): ", len ? "; " : "contacts: ",
+                 m->dim == 3 ? "faces" : "edges", gap, tol);
         list(msg, sizeof msg, pr.near, pr.nnear < 5 ? pr.nnear : 5, pr.nnear);
     }
     for (int s = 0; s < m->njoints && !msg[0]; s++)
@@ -277,10 +288,6 @@ int bl_contact_detect(bl_model *m, bl_error *err)
 oom:
     bl_error_set(err, "contacts: out of memory");
 fail:
-    free(range);
-    free(start);
-    free(fill);
-    free(items);
-    m->ninterfaces = 0;
+    bl_model_clear_interfaces(m);
     return -1;
 }

@@ -179,7 +179,7 @@ static void refuse_3d(lua_State *L, const bl_model *m, const char *fn)
 {
     if (m->dim == 3)
         fail(L, "%s: not available in 3D models yet (3D blocks can be built and inspected: "
-                "block, box, extrude, stats, block_info)", fn);
+                "block, box, extrude, contacts, stats, block_info, interface_info)", fn);
 }
 
 static int point_field(lua_State *L, int idx, const char *fn, const char *f, bl_vec2 *out)
@@ -451,7 +451,6 @@ static int model_contacts(lua_State *L)
 {
     static const char *const fields[] = {"tol", "gap", NULL};
     bl_model *m = check_model(L, 1);
-    refuse_3d(L, m, "contacts");
     opt_table(L, 2);
     check_fields(L, 2, "contacts", fields, 0);
     double tol = number_field(L, 2, "contacts", "tol", m->contact_tol, NONNEG);
@@ -600,15 +599,6 @@ static int model_stats(lua_State *L)
 {
     bl_model *m = check_model(L, 1);
     bl_error err;
-    if (m->dim == 3) { /* no interfaces in 3D yet */
-        int nfree = bl_model_free_blocks(m);
-        lua_createtable(L, 0, 4);
-        set_integer(L, "dim", 3);
-        set_integer(L, "blocks", nfree);
-        set_integer(L, "supports", m->nblocks - nfree);
-        set_number(L, "size", bl_model_size(m));
-        return 1;
-    }
     if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
     int nfree = bl_model_free_blocks(m);
     double tol, gap;
@@ -620,6 +610,48 @@ static int model_stats(lua_State *L)
     set_number(L, "size", bl_model_size(m));
     set_number(L, "tol", tol);
     set_number(L, "gap", gap);
+    set_integer(L, "dim", m->dim);
+    return 1;
+}
+
+/* model:interface_info(k) -> { a, b, normal, points, mu, cohesion, area } of
+ * detected interface k (detecting first when needed). */
+static int model_interface_info(lua_State *L)
+{
+    bl_model *m = check_model(L, 1);
+    bl_error err;
+    if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
+    lua_Integer k = luaL_checkinteger(L, 2);
+    if (k < 1 || k > m->ninterfaces)
+        return fail(L, "interface_info: argument 1 must be an interface number from 1 to %d, "
+                       "got %lld", m->ninterfaces, (long long)k);
+    const bl_interface *in = &m->interfaces[k - 1];
+    lua_createtable(L, 0, 7);
+    set_integer(L, "a", in->a + 1);
+    set_integer(L, "b", in->b + 1);
+    set_number(L, "mu", in->mu);
+    set_number(L, "cohesion", in->cohesion);
+    if (m->dim == 3) {
+        lua_createtable(L, in->np, 0);
+        for (int i = 0; i < in->np; i++) {
+            push_triple(L, in->poly[i]);
+            lua_rawseti(L, -2, i + 1);
+        }
+        lua_setfield(L, -2, "points");
+        push_triple(L, in->n3);
+        lua_setfield(L, -2, "normal");
+        set_number(L, "area", in->area3);
+    } else {
+        lua_createtable(L, 2, 0);
+        push_point(L, in->p[0]);
+        lua_rawseti(L, -2, 1);
+        push_point(L, in->p[1]);
+        lua_rawseti(L, -2, 2);
+        lua_setfield(L, -2, "points");
+        push_point(L, in->normal);
+        lua_setfield(L, -2, "normal");
+        set_number(L, "length", bl_v2_norm(bl_v2_sub(in->p[1], in->p[0])));
+    }
     return 1;
 }
 
@@ -1014,7 +1046,8 @@ int luaopen_blocklim(lua_State *L)
     static const luaL_Reg model_methods[] = {
         {"block", model_block},         {"contacts", model_contacts}, {"interface", model_interface},
         {"load", model_load},           {"solve", model_solve},       {"stats", model_stats},
-        {"block_info", model_block_info}, {"dim", model_dim}, {NULL, NULL}};
+        {"block_info", model_block_info}, {"dim", model_dim},
+        {"interface_info", model_interface_info}, {NULL, NULL}};
     static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw},
                                      {"clock", core_clock}, {"last", core_last},
                                      {NULL, NULL}};

@@ -28,6 +28,7 @@ void bl_model_free(bl_model *m)
         bl_polyhedron_free(&m->blocks[i].solid);
     }
     free(m->blocks);
+    bl_model_clear_interfaces(m);
     free(m->interfaces);
     free(m->joints);
     free(m->loads);
@@ -67,6 +68,12 @@ bl_model *bl_model_copy(const bl_model *m)
             }
             ok = 0;
         }
+    }
+    /* the interfaces' 3D polygons: shared with m until copied */
+    for (int k = 0; c->interfaces && k < m->ninterfaces; k++) {
+        bl_interface *ck = &c->interfaces[k];
+        ck->poly = ok && ck->np ? dup_array(ck->poly, (size_t)ck->np, sizeof *ck->poly) : NULL;
+        if (ck->np && !ck->poly) ok = 0;
     }
     if (!ok) {
         if (!c->blocks) c->nblocks = 0;
@@ -178,6 +185,12 @@ int bl_model_add_interface(bl_model *m, const bl_interface *k, bl_error *err)
         return bl_error_set(err, "interface: out of memory");
     m->interfaces[m->ninterfaces++] = *k;
     return 0;
+}
+
+void bl_model_clear_interfaces(bl_model *m)
+{
+    for (int k = 0; k < m->ninterfaces; k++) free(m->interfaces[k].poly);
+    m->ninterfaces = 0;
 }
 
 int bl_model_add_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)

@@ -42,6 +42,12 @@ typedef struct bl_interface {
     double mu;           /* friction coefficient; INFINITY: no sliding */
     double cohesion;     /* per unit area of the joint */
     int manual;          /* declared by interface{ points = ... } */
+    /* 3D: a convex contact polygon of np vertices (owned), its unit normal
+     * from a into b, and a frame t2 (along its first edge), t3 = n x t2 */
+    int np;
+    bl_vec3 *poly;
+    bl_vec3 n3, t2, t3;
+    double area3;
 } bl_interface;
 
 /* A user setting for the interfaces between two blocks, kept across
@@ -107,13 +113,17 @@ int bl_model_add_block(bl_model *m, const bl_vec2 *v, int nv, int support,
 int bl_model_add_solid(bl_model *m, bl_polyhedron *solid, int support, double density,
                        bl_error *err);
 
-/* Appends an interface (used by contact detection). */
+/* Appends an interface (used by contact detection), taking over its 3D
+ * polygon. */
 int bl_model_add_interface(bl_model *m, const bl_interface *k, bl_error *err);
 
 /* Records a joint spec (see bl_joint_spec) and invalidates interfaces. */
 int bl_model_add_joint(bl_model *m, const bl_joint_spec *s, bl_error *err);
 
 int bl_model_add_point_load(bl_model *m, const bl_point_load *l, bl_error *err);
+
+/* Removes every interface (freeing their 3D polygons). */
+void bl_model_clear_interfaces(bl_model *m);
 
 /* Size of the model: the diagonal of the bounding box of all blocks. */
 double bl_model_size(const bl_model *m);

@@ -57,8 +57,12 @@ local r = block { vertices = rv, faces = ref.faces }
 T.near(info(r).volume, 6, 1e-12, "box rotated about (1, 2, 3): volume unchanged")
 T.ok(near3(info(r).centroid, rotate(ref.centroid, { 1, 2, 3 }, 0.7), 1e-12),
      "box rotated: its centroid is the rotated centroid")
-T.eq(stats().blocks, 5, "stats() in 3D counts the blocks")
-T.eq(stats().dim, 3, "stats() says the model is 3D")
+local function count()
+  local n = 0
+  while pcall(current().block_info, current(), n + 1) do n = n + 1 end
+  return n
+end
+T.eq(count(), 5, "five blocks made")
 
 -- bad solids: an error naming block and face; the model as it was
 local cube = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } }
@@ -85,9 +89,95 @@ T.raises(function() block { vertices = cube, faces = { { 1, 2, 3 }, { 1, 2, 9 } 
          "a face naming a missing vertex", "block", "face 2", "vertex 9")
 T.raises(function() block { vertices = cube, faces = faces, thickness = 1 } end,
          "thickness is refused in 3D", "block", "'thickness'")
-T.eq(stats().blocks, 6, "after the errors the model has the blocks it had")
+T.eq(count(), 6, "after the errors the model has the blocks it had")
 T.raises(function() solve {} end, "solve says 3D models are not solved yet", "solve", "3D")
 T.raises(function() load { live = "horizontal" } end, "load says 3D is not built yet", "load", "3D")
+
+-- Interface detection: coplanar opposite faces and their overlap.
+local function areas()
+  local list, total = {}, 0
+  for k = 1, stats().interfaces do
+    local i = current():interface_info(k)
+    list[#list + 1] = i
+    total = total + i.area
+  end
+  return list, total
+end
+local function stack(rot)
+  rot = rot or function(p) return p end
+  model { dim = 3 }
+  local function put(size, at, support)
+    local b = { size = size, at = at }
+    -- build the box, then rebuild it through rot as vertices and faces
+    local tmp = model { dim = 3 }
+    local id = box(b)
+    local bi = tmp:block_info(id)
+    return bi, support
+  end
+  local parts = {
+    { { 3, 3, 0.5 }, { 0, 0, -0.5 }, true },
+    { { 1, 1, 1 }, { 0, 0, 0 } },
+    { { 1, 1, 1 }, { 0.5, 0.5, 1 } },
+    { { 2, 1, 0.5 }, { 0.25, 0, 2 } },
+  }
+  local solids = {}
+  for i, p in ipairs(parts) do solids[i] = { put(p[1], p[2]) } end
+  model { dim = 3 }
+  for i, sp in ipairs(solids) do
+    local v = {}
+    for k, p in ipairs(sp[1].vertices) do v[k] = rot(p) end
+    block { vertices = v, faces = sp[1].faces, support = parts[i][3] }
+  end
+end
+stack()
+local list, total = areas()
+T.eq(#list, 3, "a stack of boxes: three interfaces")
+T.near(total, 1 + 0.25 + 0.5, 1e-12, "a stack of boxes: the overlaps' areas, 1 + 0.25 + 0.5")
+T.ok(list[1].normal[3] == 1 and #list[1].points == 4, "a bed joint: normal +z, four corners")
+stack(function(p) return rotate(p, { 1, 2, 3 }, 0.7) end)
+local rlist, rtotal = areas()
+T.eq(#rlist, 3, "the stack rotated about (1, 2, 3): the same three interfaces")
+T.near(rtotal, 1.75, 1e-9, "the stack rotated: the same areas")
+
+-- a T-junction and a face that is not convex: an L-shaped prism on two boxes
+model { dim = 3 }
+box { size = { 4, 2, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 1 }, at = { -0.5, 0, 0 } }
+box { size = { 1, 1, 1 }, at = { 0.5, 0, 0 } }
+extrude { polygon = { { -1, -0.5 }, { 1, -0.5 }, { 1, 0.5 }, { 0, 0.5 }, { 0, 0 }, { -1, 0 } }, from = 1, to = 1.5 }
+T.eq(stats().dim, 3, "stats() says the model is 3D")
+T.eq(stats().blocks, 3, "stats() in 3D counts the free blocks")
+local tl = areas()
+local on_top = 0
+for _, i in ipairs(tl) do if i.b == 4 or i.a == 4 then on_top = on_top + i.area end end
+T.near(on_top, 1.5, 1e-12, "an L-shaped face on two boxes: the contact covers the L, area 1.5")
+local side = 0
+for _, i in ipairs(tl) do if (i.a == 2 and i.b == 3) then side = side + i.area end end
+T.near(side, 1, 1e-12, "two boxes side by side: a vertical joint of area 1")
+
+-- a wall of 20 x 20 boxes, one thick (x along it, z up), on a base: every
+-- bed and head joint found, 2 N (N - 1) + N of them
+local N = 20
+model { dim = 3 }
+box { size = { N + 2, 3, 1 }, at = { N / 2, 0, -1 }, support = true }
+for c = 0, N - 1 do for k = 0, N - 1 do box { size = { 1, 1, 1 }, at = { k + 0.5, 0, c } } end end
+T.eq(contacts {}, 2 * N * (N - 1) + N, "a wall of 20 x 20 boxes: 2 N (N - 1) + N interfaces")
+
+-- mistakes, named
+model { dim = 3 }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 1 }, at = { 0, 0, 0.001 } }
+T.raises(function() contacts {} end, "a box 0.001 above its base: a near-miss", "near-miss", "blocks 1 and 2")
+model { dim = 3 }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 1 } }
+box { size = { 1, 1, 1 }, at = { 0.5, 0, 0.5 } }
+T.raises(function() contacts {} end, "interpenetrating boxes", "overlapping", "blocks 2 and 3")
+model { dim = 3 }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 1 }, at = { 0, 0, 2 } }
+T.raises(function() contacts {} end, "a floating box", "no interface on free block 2")
+
 model {}
 T.raises(function() block { points = cube } end, "points in a 2D model are refused", "block", "3D")
 T.raises(function() box { size = { 1, 1, 1 } } end, "box in a 2D model is refused", "box", "dim = 3")

@@ -1,0 +1,345 @@
+/* contact3.c - interface detection in a 3D block model (contact.h).
+ *
+ * Two blocks share an interface where a face of one and a face of the other
+ * lie in one plane (within tol), face opposite ways and overlap over a
+ * positive area: the overlap of every convex piece of the one with every
+ * convex piece of the other (faces that are not convex are cut into
+ * triangles first) is a convex contact polygon.  Candidate pairs come from
+ * a sweep along the longest axis of the model over the bounding boxes
+ * sorted by their low end: n log n, plus one box test per pair whose
+ * extents along that axis overlap (about 2 N per block in an N x N wall).
+ * Interpenetration is judged on convex blocks only (the separating-axis
+ * test). */
+#include "contact3.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A face's plane and frame: n . x = d, u along its first edge, v = n x u. */
+typedef struct plane {
+    bl_vec3 n, u, v, o;
+    double d;
+} plane;
+
+static plane face_plane(const bl_polyhedron *p, int k)
+{
+    plane f;
+    f.n = bl_polyhedron_face_normal(p, k, NULL);
+    f.o = p->v[p->fi[p->fs[k]]];
+    bl_vec3 e = bl_v3_sub(p->v[p->fi[p->fs[k] + 1]], f.o);
+    e = bl_v3_sub(e, bl_v3_scale(f.n, bl_v3_dot(e, f.n)));
+    f.u = bl_v3_scale(e, 1.0 / bl_v3_norm(e));
+    f.v = bl_v3_cross(f.n, f.u);
+    f.d = bl_v3_dot(f.n, f.o);
+    return f;
+}
+
+static bl_vec2 to2(const plane *f, bl_vec3 x)
+{
+    bl_vec3 r = bl_v3_sub(x, f->o);
+    return bl_v2(bl_v3_dot(r, f->u), bl_v3_dot(r, f->v));
+}
+
+static bl_vec3 to3(const plane *f, bl_vec2 q)
+{
+    return bl_v3_add(f->o, bl_v3_add(bl_v3_scale(f->u, q.x), bl_v3_scale(f->v, q.y)));
+}
+
+/* Convex pieces of a counter-clockwise polygon q (n points): the polygon
+ * itself when convex, else the triangles of ear clipping.  Writes the
+ * pieces as index lists into idx (at most 3 (n - 2) entries) with their
+ * sizes in len; returns the number of pieces. */
+static int convex_pieces(const bl_vec2 *q, int n, int *idx, int *len)
+{
+    int convex = 1;
+    for (int i = 0; i < n && convex; i++)
+        convex = bl_v2_cross(bl_v2_sub(q[(i + 1) % n], q[i]), bl_v2_sub(q[(i + 2) % n], q[(i + 1) % n])) >= 0.0;
+    if (convex) {
+        for (int i = 0; i < n; i++) idx[i] = i;
+        len[0] = n;
+        return 1;
+    }
+    int ring[256], m = n, pieces = 0;
+    if (n > 256) return 0;
+    for (int i = 0; i < n; i++) ring[i] = i;
+    while (m > 3) {
+        int cut = -1;
+        for (int i = 0; i < m && cut < 0; i++) {
+            bl_vec2 a = q[ring[(i + m - 1) % m]], b = q[ring[i]], c = q[ring[(i + 1) % m]];
+            if (bl_v2_cross(bl_v2_sub(b, a), bl_v2_sub(c, b)) <= 0.0) continue; /* reflex */
+            int inside = 0;
+            for (int j = 0; j < m && !inside; j++) {
+                bl_vec2 p = q[ring[j]];
+                if (j == i || j == (i + 1) % m || j == (i + m - 1) % m) continue;
+                inside = bl_v2_cross(bl_v2_sub(b, a), bl_v2_sub(p, a)) >= 0.0 &&
+                         bl_v2_cross(bl_v2_sub(c, b), bl_v2_sub(p, b)) >= 0.0 &&
+                         bl_v2_cross(bl_v2_sub(a, c), bl_v2_sub(p, c)) >= 0.0;
+            }
+            if (!inside) cut = i;
+        }
+        if (cut < 0) cut = 0; /* degenerate: cut anyway */
+        idx[3 * pieces] = ring[(cut + m - 1) % m];
+        idx[3 * pieces + 1] = ring[cut];
+        idx[3 * pieces + 2] = ring[(cut + 1) % m];
+        len[pieces++] = 3;
+        memmove(ring + cut, ring + cut + 1, (size_t)(m - cut - 1) * sizeof *ring);
+        m--;
+    }
+    idx[3 * pieces] = ring[0];
+    idx[3 * pieces + 1] = ring[1];
+    idx[3 * pieces + 2] = ring[2];
+    len[pieces++] = 3;
+    return pieces;
+}
+
+/* Clips the convex polygon s (ns points, counter-clockwise) by the convex
+ * polygon c (nc, counter-clockwise) into out (room for ns + nc points);
+ * returns the number of points. */
+static int clip(const bl_vec2 *s, int ns, const bl_vec2 *c, int nc, bl_vec2 *out, bl_vec2 *tmp)
+{
+    int n = ns;
+    memcpy(out, s, (size_t)ns * sizeof *s);
+    for (int e = 0; e < nc && n > 0; e++) {
+        bl_vec2 a = c[e], b = c[(e + 1) % nc], ab = bl_v2_sub(b, a);
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            bl_vec2 p = out[i], q = out[(i + 1) % n];
+            double hp = bl_v2_cross(ab, bl_v2_sub(p, a)), hq = bl_v2_cross(ab, bl_v2_sub(q, a));
+            if (hp >= 0.0) tmp[m++] = p;
+            if ((hp >= 0.0) != (hq >= 0.0)) {
+                double t = hp / (hp - hq);
+                tmp[m++] = bl_v2_add(p, bl_v2_scale(bl_v2_sub(q, p), t));
+            }
+        }
+        memcpy(out, tmp, (size_t)m * sizeof *tmp);
+        n = m;
+    }
+    return n;
+}
+
+/* Drops points closer than tol to the one before. */
+static int simplify(bl_vec2 *q, int n, double tol)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++)
+        if (m == 0 || bl_v2_norm(bl_v2_sub(q[i], q[m - 1])) > tol) q[m++] = q[i];
+    while (m > 1 && bl_v2_norm(bl_v2_sub(q[m - 1], q[0])) <= tol) m--;
+    return m;
+}
+
+/* A face of B as a counter-clockwise polygon in the frame of A's face f
+ * (B's face looks the other way, so its order is reversed). */
+static int face_in(const plane *f, const bl_polyhedron *p, int k, bl_vec2 *q)
+{
+    int a = p->fs[k], n = p->fs[k + 1] - a;
+    for (int i = 0; i < n; i++) q[i] = to2(f, p->v[p->fi[a + n - 1 - i]]);
+    return n;
+}
+
+/* Every interface between blocks ia and ib; a near-miss or nothing. */
+static int pair3(bl_model *m, int ia, int ib, double tol, double gap, bl_contact_problems *pr, bl_error *err)
+{
+    const bl_polyhedron *A = &m->blocks[ia].solid, *B = &m->blocks[ib].solid;
+    int found = 0;
+    double near_d = 0.0;
+    enum { MAXV = 256 };
+    bl_vec2 qa[MAXV], qb[MAXV], out[2 * MAXV], tmp[2 * MAXV], sa[MAXV], sb[MAXV];
+    int ia_idx[3 * MAXV], ia_len[MAXV], ib_idx[3 * MAXV], ib_len[MAXV];
+    for (int fa = 0; fa < A->nf; fa++) {
+        plane f = face_plane(A, fa);
+        int na = A->fs[fa + 1] - A->fs[fa];
+        if (na > MAXV) continue;
+        for (int fb = 0; fb < B->nf; fb++) {
+            int nb = B->fs[fb + 1] - B->fs[fb];
+            if (nb > MAXV) continue;
+            bl_vec3 n = bl_polyhedron_face_normal(B, fb, NULL);
+            if (bl_v3_norm(bl_v3_add(n, f.n)) > 1e-6) continue; /* not facing each other */
+            double h = bl_v3_dot(f.n, bl_v3_sub(B->v[B->fi[B->fs[fb]]], f.o));
+            if (h < -tol || h > gap) continue;
+            for (int i = 0; i < na; i++) qa[i] = to2(&f, A->v[A->fi[A->fs[fa] + i]]);
+            face_in(&f, B, fb, qb);
+            int pa = convex_pieces(qa, na, ia_idx, ia_len), pb = convex_pieces(qb, nb, ib_idx, ib_len);
+            for (int x = 0, ox = 0; x < pa; ox += ia_len[x], x++) {
+                for (int i = 0; i < ia_len[x]; i++) sa[i] = qa[ia_idx[ox + i]];
+                for (int y = 0, oy = 0; y < pb; oy += ib_len[y], y++) {
+                    for (int i = 0; i < ib_len[y]; i++) sb[i] = qb[ib_idx[oy + i]];
+                    int k = simplify(out, clip(sa, ia_len[x], sb, ib_len[y], out, tmp), tol);
+                    if (k < 3) continue;
+                    double area = bl_polygon_area(out, k);
+                    if (!(area > tol * sqrt(fabs(bl_polygon_area(sa, ia_len[x]))))) continue;
+                    if (h > tol) { /* parallel, overlapping, apart: a near-miss */
+                        near_d = near_d > 0.0 ? fmin(near_d, h) : h;
+                        continue;
+                    }
+                    bl_interface c = {0};
+                    c.a = ia;
+                    c.b = ib;
+                    c.mu = m->mu;
+                    c.cohesion = m->cohesion;
+                    c.np = k;
+                    c.poly = malloc((size_t)k * sizeof *c.poly);
+                    if (!c.poly) return bl_error_set(err, "contacts: out of memory");
+                    for (int i = 0; i < k; i++) c.poly[i] = to3(&f, out[i]);
+                    c.n3 = f.n;
+                    bl_vec3 e = bl_v3_sub(c.poly[1], c.poly[0]);
+                    c.t2 = bl_v3_scale(e, 1.0 / bl_v3_norm(e));
+                    c.t3 = bl_v3_cross(c.n3, c.t2);
+                    c.area3 = area;
+                    if (bl_model_add_interface(m, &c, err)) {
+                        free(c.poly);
+                        return -1;
+                    }
+                    found = 1;
+                }
+            }
+        }
+    }
+    if (near_d > 0.0 && !found) {
+        if (pr->nnear < 5)
+            snprintf(pr->near[pr->nnear], sizeof pr->near[0], "blocks %d and %d (gap %.3g)",
+                     ia + 1, ib + 1, near_d);
+        pr->nnear++;
+    }
+    return 0;
+}
+
+/* Depth of x inside the convex hull of the faces' planes of p: the least
+ * distance to a face plane, positive inside.  For a block that is not
+ * convex this is a lower bound only where x is inside. */
+static double depth3(const bl_polyhedron *p, bl_vec3 x)
+{
+    double d = INFINITY;
+    for (int k = 0; k < p->nf; k++) {
+        bl_vec3 n = bl_polyhedron_face_normal(p, k, NULL);
+        d = fmin(d, bl_v3_dot(n, bl_v3_sub(p->v[p->fi[p->fs[k]]], x)));
+    }
+    return d;
+}
+
+/* Projections of a polyhedron's vertices on the axis a: [*lo, *hi]. */
+static void project(const bl_polyhedron *p, bl_vec3 a, double *lo, double *hi)
+{
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    for (int i = 0; i < p->nv; i++) {
+        double t = bl_v3_dot(p->v[i], a);
+        *lo = fmin(*lo, t);
+        *hi = fmax(*hi, t);
+    }
+}
+
+/* 1 when the projections on the unit axis a overlap by more than tol. */
+static int overlap_on(const bl_polyhedron *A, const bl_polyhedron *B, bl_vec3 a, double tol)
+{
+    double alo, ahi, blo, bhi;
+    project(A, a, &alo, &ahi);
+    project(B, a, &blo, &bhi);
+    return fmin(ahi, bhi) - fmax(alo, blo) > tol;
+}
+
+/* Interpenetration of two convex blocks by the separating-axis test: they
+ * overlap deeper than tol unless their projections on a face normal of
+ * either, or on the cross product of an edge of each, overlap by tol or
+ * less. */
+static int overlapping3(const bl_block *X, const bl_block *Y, double tol)
+{
+    const bl_polyhedron *A = &X->solid, *B = &Y->solid;
+    for (int pass = 0; pass < 2; pass++) {
+        const bl_polyhedron *P = pass ? B : A;
+        for (int k = 0; k < P->nf; k++)
+            if (!overlap_on(A, B, bl_polyhedron_face_normal(P, k, NULL), tol)) return 0;
+    }
+    for (int k = 0; k < A->nf; k++)
+        for (int i = A->fs[k]; i < A->fs[k + 1]; i++) {
+            int i1 = i + 1 < A->fs[k + 1] ? i + 1 : A->fs[k];
+            bl_vec3 ea = bl_v3_sub(A->v[A->fi[i1]], A->v[A->fi[i]]);
+            for (int l = 0; l < B->nf; l++)
+                for (int j = B->fs[l]; j < B->fs[l + 1]; j++) {
+                    int j1 = j + 1 < B->fs[l + 1] ? j + 1 : B->fs[l];
+                    bl_vec3 c = bl_v3_cross(ea, bl_v3_sub(B->v[B->fi[j1]], B->v[B->fi[j]]));
+                    double len = bl_v3_norm(c);
+                    if (len <= 1e-12 * (bl_v3_norm(ea) + 1e-300) * (bl_v3_norm(ea) + 1e-300))
+                        continue; /* parallel edges */
+                    if (!overlap_on(A, B, bl_v3_scale(c, 1.0 / len), tol)) return 0;
+                }
+        }
+    return 1;
+}
+
+/* Blocks in order of the low end of their boxes along one axis. */
+static int sweep_axis;
+static const bl_block *sweep_blocks;
+static int by_low(const void *x, const void *y)
+{
+    double a = sweep_blocks[*(const int *)x].box3[sweep_axis];
+    double b = sweep_blocks[*(const int *)y].box3[sweep_axis];
+    return (a > b) - (a < b);
+}
+
+static int convex(const bl_polyhedron *p, double tol)
+{
+    for (int i = 0; i < p->nv; i++)
+        if (depth3(p, p->v[i]) < -tol) return 0;
+    return 1;
+}
+
+int bl_contact_pairs3(bl_model *m, double tol, double gap, bl_contact_problems *pr, bl_error *err)
+{
+    int n = m->nblocks;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < n; i++)
+        for (int d = 0; d < 3; d++) {
+            lo[d] = fmin(lo[d], m->blocks[i].box3[d]);
+            hi[d] = fmax(hi[d], m->blocks[i].box3[d + 3]);
+        }
+    int axis = 0;
+    for (int d = 1; d < 3; d++)
+        if (hi[d] - lo[d] > hi[axis] - lo[axis]) axis = d;
+    int *order = malloc((size_t)n * sizeof *order);
+    char *is_convex = malloc((size_t)n + 1);
+    if (!order || !is_convex) {
+        free(order);
+        free(is_convex);
+        return bl_error_set(err, "contacts: out of memory");
+    }
+    for (int i = 0; i < n; i++) {
+        order[i] = i;
+        is_convex[i] = (char)convex(&m->blocks[i].solid, tol);
+    }
+    sweep_axis = axis;
+    sweep_blocks = m->blocks;
+    qsort(order, (size_t)n, sizeof *order, by_low);
+
+    int rc = 0;
+    for (int s = 0; s < n && !rc; s++) {
+        int i = order[s];
+        const bl_block *A = &m->blocks[i];
+        for (int t = s + 1; t < n && !rc; t++) {
+            int j = order[t];
+            const bl_block *B = &m->blocks[j];
+            if (B->box3[axis] > A->box3[axis + 3] + gap) break;
+            if (A->support && B->support) continue;
+            int apart = 0, deep = 1;
+            for (int d = 0; d < 3; d++) {
+                apart |= A->box3[d] > B->box3[d + 3] + gap || B->box3[d] > A->box3[d + 3] + gap;
+                deep &= A->box3[d] < B->box3[d + 3] - tol && B->box3[d] < A->box3[d + 3] - tol;
+            }
+            if (apart) continue;
+            int a = i < j ? i : j, b = i < j ? j : i;
+            if (deep && is_convex[a] && is_convex[b] &&
+                overlapping3(&m->blocks[a], &m->blocks[b], tol)) {
+                if (pr->noverlap < 5)
+                    snprintf(pr->overlap[pr->noverlap], sizeof pr->overlap[0], "blocks %d and %d",
+                             a + 1, b + 1);
+                pr->noverlap++;
+                continue;
+            }
+            rc = pair3(m, a, b, tol, gap, pr, err);
+        }
+    }
+    free(order);
+    free(is_convex);
+    return rc;
+}
