@@ -100,6 +100,9 @@ function Interface.__tostring(k)
   return s
 end
 function Velocity.__tostring(u)
+  if #u == 6 then
+    return ("v = (%.4g, %.4g, %.4g), omega = (%.4g, %.4g, %.4g)"):format(table.unpack(u))
+  end
   return ("vx = %.4g, vy = %.4g, omega = %.4g"):format(u[1], u[2], u[3])
 end
 

@@ -5,19 +5,22 @@
 -- negative entry a gap of that length.  The bottom course sits on y = y0
 -- (default 0) and every course starts at x = x0 (default 0).  A fixed base
 -- block of height H spans the widest course unless base = false.
+-- In a 3D model (x along the wall, y through it, z up) the same wall is
+-- built one block thick: every block the 2D one swept from y = 0 to
+-- y = depth (required), the courses rising along z from z0 (origin {x0, z0}).
 -- Returns the list of block numbers, bottom course first, and the base.
 local report = require "blocklim.report"
 
 return function(M)
   local allowed = { courses = true, unit = true, base = true, origin = true,
-                    density = true, thickness = true }
+                    density = true, thickness = true, depth = true }
   local function fail(msg) error("wall: " .. msg, 3) end
 
   return function(t)
     if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
     for k in pairs(t) do
       if not allowed[k] then
-        fail(("unknown field '%s' (fields: base, courses, density, origin, thickness, unit)")
+        fail(("unknown field '%s' (fields: base, courses, density, depth, origin, thickness, unit)")
           :format(tostring(k)))
       end
     end
@@ -50,24 +53,44 @@ return function(M)
       end
       width = math.max(width, len)
     end
+    local m = M.current()
+    local solid = m and m:dim() == 3
+    if solid then
+      if type(t.depth) ~= "number" or not (t.depth > 0) then
+        fail("field 'depth' (the wall's thickness, along y) must be a positive number in a 3D model")
+      end
+      if t.thickness ~= nil then fail("field 'thickness' is for 2D models; give 'depth' in 3D") end
+    elseif t.depth ~= nil then
+      fail("field 'depth' is for 3D models (model{ dim = 3 })")
+    end
+    -- a block from its 2D outline: as it is, or swept through the depth
+    local function make(vertices, fields)
+      if not solid then
+        fields.vertices = vertices
+        return M.block(fields)
+      end
+      fields.polygon, fields.axis, fields.from, fields.to = vertices, "y", 0, t.depth
+      fields.thickness = nil
+      return M.extrude(fields)
+    end
     local blocks = {}
     local opts = { density = t.density, thickness = t.thickness }
     for c, course in ipairs(courses) do
       local x, y = 0, (c - 1) * H
       for _, v in ipairs(course) do
         if v > 0 then
-          blocks[#blocks + 1] = M.block {
-            vertices = { { x0 + x * L, y0 + y }, { x0 + (x + v) * L, y0 + y },
-                         { x0 + (x + v) * L, y0 + y + H }, { x0 + x * L, y0 + y + H } },
-            density = opts.density, thickness = opts.thickness }
+          blocks[#blocks + 1] = make(
+            { { x0 + x * L, y0 + y }, { x0 + (x + v) * L, y0 + y },
+              { x0 + (x + v) * L, y0 + y + H }, { x0 + x * L, y0 + y + H } },
+            { density = opts.density, thickness = opts.thickness })
         end
         x = x + math.abs(v)
       end
     end
     local base
     if t.base ~= false then
-      base = M.block { vertices = { { x0, y0 - H }, { x0 + width * L, y0 - H },
-                                    { x0 + width * L, y0 }, { x0, y0 } }, support = true }
+      base = make({ { x0, y0 - H }, { x0 + width * L, y0 - H }, { x0 + width * L, y0 }, { x0, y0 } },
+                  { support = true })
     end
     return report.blocks(blocks), base
   end

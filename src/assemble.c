@@ -54,8 +54,14 @@ static double cohesion_share(const bl_model *m, const bl_interface *k)
 
 bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *err)
 {
+    if (m->dim == 3) {
+        bl_error_set(err, "solve: 3D models are solved with the associative flow only so far "
+                          "(flow = \"associative\")");
+        return NULL;
+    }
     bl_system *s = calloc(1, sizeof *s);
     if (!s) goto oom;
+    s->dim = 2;
     s->form = form;
     int nb = m->nblocks, nfree = 0;
     double wsum = 0.0, lsum = 0.0;
@@ -126,6 +132,7 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
                     hi = isinf(in->mu) ? INFINITY : C;
                     break;
                 case BL_COL_COHESION: dn = 0.0; dt = 1.0; lo = -C; hi = C; break;
+                case BL_COL_PYRAMID: break; /* 3D only */
                 }
                 bl_vec2 f = bl_v2_add(bl_v2_scale(nu, dn), bl_v2_scale(tau, dt));
                 s->colptr[c] = nz;

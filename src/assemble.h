@@ -20,8 +20,18 @@ typedef enum bl_column_kind {
     BL_COL_CONE_NEG,   /* n = 1, t = -mu,  x >= 0 */
     BL_COL_NORMAL,     /* n = 1, t = 0,    x >= 0 (mu = 0 or no sliding) */
     BL_COL_SHEAR,      /* n = 0, t = 1,    free (no sliding) */
-    BL_COL_COHESION    /* n = 0, t = 1,    -C <= x <= C */
+    BL_COL_COHESION,   /* n = 0, t = 1,    -C <= x <= C */
+    BL_COL_PYRAMID     /* 3D: an edge of the friction pyramid, x >= 0 */
 } bl_column_kind;
+
+/* How a 3D contact point's Coulomb cone becomes linear: a pyramid of
+ * `facets` edges (3 to 64), on the cone (inscribed: less friction than the
+ * cone) or around it (circumscribed: more), an edge or a facet centred on
+ * the contact polygon's first edge t2. */
+typedef struct bl_cone {
+    int facets;
+    int circumscribed;
+} bl_cone;
 
 /* How friction enters the system.  BL_FRICTION_CONE: the Coulomb cone of
  * (T4), for the associative LP and the certificate of the sequence of LPs.
@@ -31,6 +41,7 @@ typedef enum bl_column_kind {
 typedef enum bl_friction_form { BL_FRICTION_CONE, BL_FRICTION_FIXED } bl_friction_form;
 
 typedef struct bl_system {
+    int dim;                 /* 2: rows x, y, moment per block; 3: forces x, y, z, moments */
     int nrows, ncols;        /* ncols = nforce + 1 */
     int nforce;              /* force columns; alpha is column nforce */
     int *colptr, *rowind;    /* CSC of [A fL], owned */
@@ -41,17 +52,27 @@ typedef struct bl_system {
     int *block_row;          /* per block: its first row, -1 for supports */
     int *col_point;          /* per force column: 2 * interface + end */
     signed char *col_kind;   /* per force column: bl_column_kind */
-    double *col_nt;          /* per force column: (n, t) of a unit value */
+    double *col_nt;          /* per force column: (n, t) of a unit value; 3D (n, t2, t3) */
     double L0, W0;           /* length and force scales */
     bl_friction_form form;
     double *cohesion;        /* per contact point: C_p / W0 */
     double *mu;              /* per contact point: the interface's mu */
-    int npoints;             /* 2 per interface */
+    int npoints;             /* 2 per interface; 3D the vertices of the contact polygons */
 } bl_system;
 
 /* Builds the system for m (whose interfaces must be detected).  Returns NULL
- * with err set when the model cannot be assembled. */
+ * with err set when the model cannot be assembled.  2D models only. */
 bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *err);
+
+/* The Coulomb-cone system of a 3D model, the cone linearized as given
+ * (src/assemble3.c): six rows per free block, a force at every vertex of
+ * every contact polygon. */
+bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *err);
+
+/* 3D: the forces (n, t2, t3 per contact point, physical units) from x, and
+ * the mechanism (vx, vy, vz, wx, wy, wz per block) from y. */
+void bl_system_forces3(const bl_system *s, const double *x, double *force);
+void bl_system_mechanism3(const bl_system *s, const bl_model *m, const double *y, double *u);
 
 /* For a BL_FRICTION_FIXED system: the bounds of every column when the
  * contact points carry the normal forces n (per point, scaled by W0):

@@ -16,6 +16,8 @@ void bl_solve_options_default(bl_solve_options *o)
     o->iterations = 0;
     o->lp = BL_LP_AUTO;
     o->mps = NULL;
+    o->cone.facets = 8;
+    o->cone.circumscribed = 0;
 }
 
 bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const double *obj,
@@ -42,7 +44,8 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     bl_model *copy = bl_model_copy(m);
     bl_solution *s = copy ? bl_solution_new(copy) : NULL;
     if (!s) return bl_error_set(err, "solve: out of memory");
-    bl_system *sys = bl_system_build(m, BL_FRICTION_CONE, err);
+    bl_system *sys = m->dim == 3 ? bl_system_build3(m, &o->cone, err)
+                                 : bl_system_build(m, BL_FRICTION_CONE, err);
     if (!sys) {
         bl_solution_free(s);
         return -1;
@@ -73,8 +76,13 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         s->alpha = x[sys->nforce];
         if (s->alpha < 0.0) s->status = BL_UNSTABLE;
         s->has_mechanism = 1;
-        bl_system_forces(sys, m, x, s->force);
-        bl_system_mechanism(sys, m, y, s->u);
+        if (sys->dim == 3) {
+            bl_system_forces3(sys, x, s->force);
+            bl_system_mechanism3(sys, m, y, s->u);
+        } else {
+            bl_system_forces(sys, m, x, s->force);
+            bl_system_mechanism(sys, m, y, s->u);
+        }
         bl_solution_classify(s);
         s->verified = bl_verify(sys, s->alpha, x, y, o->tolerance, &s->res);
         if (bl_solution_keep(s, x, sys->ncols, y, sys->nrows)) {

@@ -9,6 +9,7 @@
 #include "lp.h"
 #include "model.h"
 #include "solution.h"
+#include "assemble.h"
 
 typedef struct bl_solve_options {
     double tolerance;   /* verification tolerance (default 1e-7) */
@@ -17,6 +18,7 @@ typedef struct bl_solve_options {
     int iterations;     /* iteration cap of the LP engine, 0: its default */
     bl_lp_engine_kind lp;
     const char *mps;    /* write the LP to this MPS file first, or NULL */
+    bl_cone cone;       /* 3D: the friction pyramid (8 facets, inscribed) */
 } bl_solve_options;
 
 void bl_solve_options_default(bl_solve_options *o);
@@ -24,8 +26,7 @@ void bl_solve_options_default(bl_solve_options *o);
 /* An LP of the system s (assemble.h) with the given bounds and objective
  * (NULL: the system's own), on the engine and limits of o.  NULL with err
  * set on failure. */
-struct bl_system;
-bl_lp *bl_solve_lp(const struct bl_system *s, const double *lo, const double *hi,
+bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi,
                    const double *obj, const bl_solve_options *o, bl_error *err);
 
 /* Detects interfaces when needed (which may fail: err says why), assembles,

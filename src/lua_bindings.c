@@ -529,8 +529,15 @@ static int model_load(lua_State *L)
     static const char *const dead_choices[] = {"self-weight", "none", NULL};
     static const char *const live_choices[] = {"horizontal", "none", NULL};
     bl_model *m = check_model(L, 1);
-    refuse_3d(L, m, "load");
     check_fields(L, 2, "load", fields, 0);
+    if (m->dim == 3) {
+        int point = 0;
+        for (int k = 0; k < 2; k++)
+            if (field(L, 2, k ? "live" : "dead")) point |= lua_istable(L, -1), lua_pop(L, 1);
+        if (point || field_given(L, 2, "tilt"))
+            fail(L, "load: point loads and tilt are not built for 3D models yet (self weight "
+                    "and a horizontal live load in any direction {dx, dy} are)");
+    }
     int kinds[2] = {-1, -1}; /* dead, live: choice index, 2 = point load, -1 = absent */
     bl_point_load pl[2] = {{0}, {0}};
     for (int k = 0; k < 2; k++) {
@@ -714,6 +721,7 @@ static int model_block_info(lua_State *L)
 
 
 static void push_details(lua_State *L, const bl_solution *s);
+static void push_details3(lua_State *L, const bl_solution *s);
 
 /* Builds the result table of doc/guide.md from s (on the stack at sidx). */
 static void push_result(lua_State *L, const bl_solution *s, int sidx)
@@ -798,7 +806,8 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     }
     lua_setfield(L, -2, "residuals");
 
-    push_details(L, s);
+    if (m->dim == 3) push_details3(L, s);
+    else push_details(L, s);
     lua_setfield(L, -3, "interfaces");
     lua_setfield(L, -2, "mechanism");
     int count[4] = {0};
@@ -856,6 +865,56 @@ static void push_details(lua_State *L, const bl_solution *s)
     }
 }
 
+/* 3D: the mechanism (vx, vy, vz, wx, wy, wz per block) and the interfaces:
+ * blocks, state, contact polygon, normal and frame, and the force (n, t2,
+ * t3) at every vertex with their sums N and T (the shear's magnitude). */
+static void push_details3(lua_State *L, const bl_solution *s)
+{
+    const bl_model *m = s->model;
+    lua_createtable(L, m->nblocks, 0);
+    for (int i = 0; i < m->nblocks; i++) {
+        lua_createtable(L, 6, 0);
+        for (int c = 0; c < 6; c++) {
+            lua_pushnumber(L, s->u[6 * i + c]);
+            lua_rawseti(L, -2, c + 1);
+        }
+        lua_rawseti(L, -2, i + 1);
+    }
+    lua_createtable(L, m->ninterfaces, 0);
+    const double *f = s->force;
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        lua_createtable(L, 0, 10);
+        set_integer(L, "a", in->a + 1);
+        set_integer(L, "b", in->b + 1);
+        set_string(L, "state", bl_state_name(s->state[k]));
+        lua_createtable(L, in->np, 0);
+        for (int e = 0; e < in->np; e++) {
+            push_triple(L, in->poly[e]);
+            lua_rawseti(L, -2, e + 1);
+        }
+        lua_setfield(L, -2, "points");
+        push_triple(L, in->n3);
+        lua_setfield(L, -2, "normal");
+        push_triple(L, in->t2);
+        lua_setfield(L, -2, "t2");
+        double N = 0.0, T2 = 0.0, T3 = 0.0;
+        lua_createtable(L, in->np, 0);
+        for (int e = 0; e < in->np; e++, f += 3) {
+            push_triple(L, bl_v3(f[0], f[1], f[2]));
+            lua_rawseti(L, -2, e + 1);
+            N += f[0];
+            T2 += f[1];
+            T3 += f[2];
+        }
+        lua_setfield(L, -2, "forces");
+        set_number(L, "N", N);
+        set_number(L, "T", hypot(T2, T3));
+        set_number(L, "mu", in->mu);
+        lua_rawseti(L, -2, k + 1);
+    }
+}
+
 /* Ctrl-C during a solve: the core polls the flag; the handler that was in
  * place (the prompt's, or lua.c's under a stock interpreter) runs too. */
 static struct sigaction previous_sigint;
@@ -872,7 +931,7 @@ static int model_solve(lua_State *L)
     static const char *const fields[] = {
         "flow",     "method", "lp",    "tolerance", "time_limit",      "iterations", "verbose",
         "mps",      "beta",   "settle", "slip",     "lps",             "starts",     "seed",
-        "progress", "start",  "penalty", "complementarity", NULL};
+        "progress", "start",  "penalty", "complementarity", "cone", NULL};
     static const char *const flows[] = {"associative", "nonassociative", NULL};
     static const char *const methods[] = {"assoc", "seqlp", "mpec", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
@@ -880,15 +939,18 @@ static int model_solve(lua_State *L)
     static const char *const starts_from[] = {"cold", "assoc", "seqlp", NULL};
     enum { ASSOC, SEQLP, MPEC };
     bl_model *m = check_model(L, 1);
-    refuse_3d(L, m, "solve");
     opt_table(L, 2);
     check_fields(L, 2, "solve", fields, 0);
     /* By default, the non-associative answer (the associative one beside
      * it) wherever a joint has finite friction.  assoc and seqlp each solve
      * one flow rule, mpec either. */
-    int method = choice_field(L, 2, "solve", "method", methods, SEQLP);
+    /* (3D models: the associative flow only, so far) */
+    int method = choice_field(L, 2, "solve", "method", methods, m->dim == 3 ? ASSOC : SEQLP);
     int flow = choice_field(L, 2, "solve", "flow", flows, method == ASSOC ? 0 : 1);
     if (!field_given(L, 2, "method")) method = flow ? SEQLP : ASSOC;
+    if (m->dim == 3 && method != ASSOC)
+        fail(L, "solve: 3D models are solved with the associative flow only so far "
+                "(flow = \"associative\")");
     if (method != MPEC && method != flow)
         fail(L, "solve: method \"%s\" solves the %s flow rule, not flow = \"%s\"",
              methods[method], flows[method], flows[flow]);
@@ -942,6 +1004,21 @@ static int model_solve(lua_State *L)
     if (iters != floor(iters) || iters > 1e9)
         fail(L, "solve: field 'iterations' must be a positive integer, got %g", iters);
     o.iterations = (int)iters;
+    if (field(L, 2, "cone")) {
+        static const char *const cone_fields[] = {"facets", "kind", NULL};
+        static const char *const kinds[] = {"inscribed", "circumscribed", NULL};
+        if (m->dim != 3) fail(L, "solve: field 'cone' is for 3D models");
+        if (!lua_istable(L, -1))
+            fail(L, "solve: field 'cone' must be a table { facets = 8, kind = \"inscribed\" }");
+        int ct = lua_gettop(L);
+        check_fields(L, ct, "solve cone", cone_fields, 0);
+        double k = number_field(L, ct, "solve cone", "facets", 8, POSITIVE);
+        if (k != floor(k) || k < 3 || k > 64)
+            fail(L, "solve cone: field 'facets' must be an integer from 3 to 64, got %g", k);
+        o.cone.facets = (int)k;
+        o.cone.circumscribed = choice_field(L, ct, "solve cone", "kind", kinds, 0);
+        lua_pop(L, 1);
+    }
     if (method == MPEC && iters > 0) {
         mo.iterations = (int)iters; /* Ipopt's cap; the start's LP keeps its own */
         o.iterations = 0;
@@ -1003,6 +1080,8 @@ static int solution_gc(lua_State *L)
 static int core_draw(lua_State *L)
 {
     bl_solution **p = luaL_checkudata(L, 1, SOLUTION_MT);
+    if ((*p)->model->dim == 3)
+        return fail(L, "%s: pictures of 3D models are not built yet", luaL_checkstring(L, 3));
     const char *file = luaL_checkstring(L, 2);
     const char *fmt = luaL_checkstring(L, 3);
     int width = (int)luaL_optinteger(L, 4, 0);

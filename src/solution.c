@@ -53,9 +53,12 @@ bl_solution *bl_solution_new(bl_model *c)
         return NULL;
     }
     s->model = c;
-    size_t nb = (size_t)c->nblocks, ni = (size_t)c->ninterfaces;
-    s->u = calloc(3 * nb + 1, sizeof *s->u);
-    s->force = calloc(4 * ni + 1, sizeof *s->force);
+    size_t nb = (size_t)c->nblocks, ni = (size_t)c->ninterfaces, np = 0;
+    for (size_t k = 0; k < ni; k++) np += (size_t)c->interfaces[k].np;
+    /* 2D: 3 velocities per block, n and t at both ends of an interface;
+     * 3D: 6 per block, n, t2, t3 at every vertex of a contact polygon */
+    s->u = calloc((c->dim == 3 ? 6 : 3) * nb + 1, sizeof *s->u);
+    s->force = calloc((c->dim == 3 ? 3 * np : 4 * ni) + 1, sizeof *s->force);
     s->state = calloc(ni + 1, sizeof *s->state);
     s->hinge = calloc(ni + 1, sizeof *s->hinge);
     if (!s->u || !s->force || !s->state || !s->hinge) {
@@ -131,9 +134,57 @@ bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec
 /* Relative threshold below which a relative velocity counts as zero. */
 #define MOTION_THRESHOLD 1e-5
 
+/* Relative velocity of b with respect to a at the 3D point p. */
+static bl_vec3 relative3(const bl_solution *s, int a, int b, bl_vec3 p)
+{
+    bl_vec3 v[2];
+    int blk[2] = {a, b};
+    for (int i = 0; i < 2; i++) {
+        const double *u = s->u + 6 * blk[i];
+        bl_vec3 r = bl_v3_sub(p, s->model->blocks[blk[i]].centroid3);
+        v[i] = bl_v3_add(bl_v3(u[0], u[1], u[2]), bl_v3_cross(bl_v3(u[3], u[4], u[5]), r));
+    }
+    return bl_v3_sub(v[1], v[0]);
+}
+
+/* 3D states, from the relative velocity at every vertex of the contact
+ * polygon: sliding where a vertex moves along the joint more than it
+ * opens, separating where every vertex opens, rocking where some do. */
+static void classify3(bl_solution *s)
+{
+    const bl_model *m = s->model;
+    double vmax = 0.0;
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        for (int e = 0; e < in->np; e++)
+            vmax = fmax(vmax, bl_v3_norm(relative3(s, in->a, in->b, in->poly[e])));
+    }
+    double eps = MOTION_THRESHOLD * vmax;
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        int open = 0, sliding = 0;
+        for (int e = 0; e < in->np; e++) {
+            bl_vec3 d = relative3(s, in->a, in->b, in->poly[e]);
+            double dn = bl_v3_dot(d, in->n3);
+            double dt = bl_v3_norm(bl_v3_sub(d, bl_v3_scale(in->n3, dn)));
+            double mu = isinf(in->mu) ? 0.0 : in->mu;
+            if (bl_v3_norm(d) <= eps) continue;
+            if (dt > eps && dn <= mu * dt + eps) sliding++;
+            else open++;
+        }
+        s->hinge[k] = -1;
+        s->state[k] = sliding ? BL_SLIDING : open == in->np ? BL_SEPARATING
+                                : open ? BL_ROCKING : BL_CLOSED;
+    }
+}
+
 void bl_solution_classify(bl_solution *s)
 {
     const bl_model *m = s->model;
+    if (m->dim == 3) {
+        classify3(s);
+        return;
+    }
     double vmax = 0.0;
     for (int k = 0; k < m->ninterfaces; k++)
         for (int e = 0; e < 2; e++) {

@@ -90,8 +90,8 @@ T.raises(function() block { vertices = cube, faces = { { 1, 2, 3 }, { 1, 2, 9 } 
 T.raises(function() block { vertices = cube, faces = faces, thickness = 1 } end,
          "thickness is refused in 3D", "block", "'thickness'")
 T.eq(count(), 6, "after the errors the model has the blocks it had")
-T.raises(function() solve {} end, "solve says 3D models are not solved yet", "solve", "3D")
-T.raises(function() load { live = "horizontal" } end, "load says 3D is not built yet", "load", "3D")
+T.raises(function() load { live = { block = 1, at = { 0, 0, 0 }, force = { 1, 0, 0 } } } end,
+         "3D point loads are refused for now", "load", "3D")
 
 -- Interface detection: coplanar opposite faces and their overlap.
 local function areas()
@@ -177,6 +177,73 @@ model { dim = 3 }
 box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
 box { size = { 1, 1, 1 }, at = { 0, 0, 2 } }
 T.raises(function() contacts {} end, "a floating box", "no interface on free block 2")
+
+
+-- The associative LP in 3D (vertex model, friction pyramids).
+local walls = require "walls"
+for _, case in ipairs { { 0.5, 1, 0.3 }, { 0.5, 1, 0.8 }, { 0.4, 0.3, 0.5 } } do
+  local b, h, mu = case[1], case[2], case[3]
+  model { dim = 3, mu = mu }
+  box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+  box { size = { b, 2 * b, h } }
+  local rx = solve {}
+  T.near(rx.alpha, math.min(mu, b / h), 1e-9,
+         ("box %g x %g x %g, mu = %g, loaded along x: alpha = min(mu, b/h)"):format(b, 2 * b, h, mu))
+  T.ok(rx.verified, "box along x: verified")
+  load { live = "horizontal", direction = { 0, 1 } }
+  local ry = solve { cone = { facets = 4, kind = "circumscribed" } }
+  T.near(ry.alpha, math.min(mu, 2 * b / h), 1e-9,
+         ("the same box loaded along y: alpha = min(mu, 2b/h)"))
+end
+-- a free-standing wall loaded out of its plane overturns at t/h
+model { dim = 3, mu = 0.8 }
+wall { courses = { { 1, 1, 1 }, { 1, 1, 1 }, { 1, 1, 1 }, { 1, 1, 1 } }, unit = { 0.4, 0.2 }, depth = 0.15 }
+load { live = "horizontal", direction = { 0, 1 } }
+local ow = solve {}
+T.near(ow.alpha, 0.15 / 0.8, 1e-9, "a wall 0.15 thick and 0.8 high loaded out of plane: alpha = t/h")
+T.ok(ow.verified, "out-of-plane wall: verified")
+-- the benchmark walls extruded one block thick, loaded in their plane, give
+-- the 2D alpha with every pyramid
+for _, w in ipairs { "W1", "W4", "W5" } do
+  model { mu = 0.65 }
+  wall { courses = walls[w], unit = { 0.4, 0.175 } }
+  local a2 = solve { flow = "associative" }.alpha
+  model { dim = 3, mu = 0.65 }
+  wall { courses = walls[w], unit = { 0.4, 0.175 }, depth = 0.2 }
+  for _, cone in ipairs { { facets = 4 }, { facets = 8, kind = "circumscribed" } } do
+    local r = solve { cone = cone }
+    T.near(r.alpha, a2, 1e-6, ("%s extruded, %d-facet %s pyramid: the 2D alpha"):format(w,
+           cone.facets, cone.kind or "inscribed"))
+    T.ok(r.verified, w .. " extruded: verified")
+  end
+end
+-- rotating a model about the vertical, its load with it, leaves alpha alone
+local function turned(deg)
+  local a = math.rad(deg)
+  local c, s = math.cos(a), math.sin(a)
+  local function rot(p) return { c * p[1] - s * p[2], s * p[1] + c * p[2], p[3] } end
+  model { dim = 3, mu = 0.65 }
+  local tmp = model { dim = 3, mu = 0.65 }
+  wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
+  local solids = {}
+  for i = 1, 56 do solids[i] = tmp:block_info(i) end
+  model { dim = 3, mu = 0.65 }
+  for _, sb in ipairs(solids) do
+    local v = {}
+    for k, p in ipairs(sb.vertices) do v[k] = rot(p) end
+    block { vertices = v, faces = sb.faces, support = sb.support }
+  end
+  load { live = "horizontal", direction = { c, s } }
+  return solve {}.alpha
+end
+local a0 = turned(0)
+for _, deg in ipairs { 30, 137 } do
+  T.near(turned(deg), a0, 1e-6, ("W4 extruded, turned %d degrees about z with its load: alpha unchanged"):format(deg))
+end
+T.raises(function() solve { flow = "nonassociative" } end, "3D: the non-associative flow is refused",
+         "solve", "associative")
+T.raises(function() solve { cone = { facets = 2 } } end, "3D: a pyramid of 2 facets is refused",
+         "facets", "3 to 64")
 
 model {}
 T.raises(function() block { points = cube } end, "points in a 2D model are refused", "block", "3D")

@@ -1,0 +1,209 @@
+/* assemble3.c - the equilibrium system of a 3D model (assemble.h), vertex
+ * model: a force at every vertex of every contact polygon, within a
+ * pyramid of k facets that approximates Coulomb's cone (doc/theory.md,
+ * 3D statics). */
+#include "assemble.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Unit force directions (n, t2, t3 components) of the columns at a contact
+ * point with friction mu: the pyramid's k edges, inscribed in the cone (on
+ * it) or circumscribed (its facets touching it, a facet centred on t2);
+ * the normal alone without friction; the normal and two free shears when
+ * joints cannot slide.  Returns the number of columns. */
+static int point_columns(double mu, const bl_cone *cone, double nt[][3], bl_column_kind *kind)
+{
+    if (isinf(mu)) {
+        double d[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        memcpy(nt, d, sizeof d);
+        kind[0] = BL_COL_NORMAL;
+        kind[1] = kind[2] = BL_COL_SHEAR;
+        return 3;
+    }
+    if (mu == 0.0) {
+        nt[0][0] = 1, nt[0][1] = nt[0][2] = 0;
+        kind[0] = BL_COL_NORMAL;
+        return 1;
+    }
+    int k = cone->facets;
+    double r = cone->circumscribed ? mu / cos(M_PI / k) : mu;
+    double shift = cone->circumscribed ? M_PI / k : 0.0;
+    for (int e = 0; e < k; e++) {
+        double th = 2.0 * M_PI * e / k + shift;
+        nt[e][0] = 1.0;
+        nt[e][1] = r * cos(th);
+        nt[e][2] = r * sin(th);
+        kind[e] = BL_COL_PYRAMID;
+    }
+    return k;
+}
+
+/* a x b, with the components below their own round-off set to zero (as in
+ * 2D: a force through the centroid must have no moment at all). */
+static bl_vec3 moment(bl_vec3 a, bl_vec3 b)
+{
+    bl_vec3 c = bl_v3_cross(a, b);
+    double e = 8.0 * DBL_EPSILON;
+    if (fabs(c.x) <= e * (fabs(a.y * b.z) + fabs(a.z * b.y))) c.x = 0.0;
+    if (fabs(c.y) <= e * (fabs(a.z * b.x) + fabs(a.x * b.z))) c.y = 0.0;
+    if (fabs(c.z) <= e * (fabs(a.x * b.y) + fabs(a.y * b.x))) c.z = 0.0;
+    return c;
+}
+
+bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *err)
+{
+    bl_system *s = calloc(1, sizeof *s);
+    if (!s) goto oom;
+    s->dim = 3;
+    s->form = BL_FRICTION_CONE;
+    int nb = m->nblocks, nfree = 0;
+    double wsum = 0.0, lsum = 0.0;
+    s->block_row = malloc((size_t)(nb ? nb : 1) * sizeof *s->block_row);
+    if (!s->block_row) goto oom;
+    for (int i = 0; i < nb; i++) {
+        const bl_block *b = &m->blocks[i];
+        s->block_row[i] = b->support ? -1 : 6 * nfree++;
+        if (!b->support) wsum += b->weight;
+        lsum += cbrt(b->volume);
+    }
+    if (nfree == 0) {
+        bl_system_free(s);
+        bl_error_set(err, "solve: the model has no free block");
+        return NULL;
+    }
+    s->W0 = wsum / nfree;
+    s->L0 = lsum / nb;
+    s->nrows = 6 * nfree;
+
+    double nt[64][3];
+    bl_column_kind kind[64];
+    int nforce = 0, npoints = 0;
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        if (in->cohesion > 0.0) {
+            bl_system_free(s);
+            bl_error_set(err, "solve: cohesion is not built for 3D models yet (interface of "
+                              "blocks %d and %d)", in->a + 1, in->b + 1);
+            return NULL;
+        }
+        nforce += in->np * point_columns(in->mu, cone, nt, kind);
+        npoints += in->np;
+    }
+    s->nforce = nforce;
+    s->ncols = nforce + 1;
+    s->npoints = npoints;
+    size_t nc = (size_t)s->ncols, nnz_max = 12 * (size_t)nforce + (size_t)s->nrows;
+    s->colptr = malloc((nc + 1) * sizeof *s->colptr);
+    s->rowind = malloc(nnz_max * sizeof *s->rowind);
+    s->val = malloc(nnz_max * sizeof *s->val);
+    s->lo = malloc(nc * sizeof *s->lo);
+    s->hi = malloc(nc * sizeof *s->hi);
+    s->obj = calloc(nc, sizeof *s->obj);
+    s->rhs = calloc((size_t)s->nrows, sizeof *s->rhs);
+    s->col_point = malloc(nc * sizeof *s->col_point);
+    s->col_kind = malloc(nc * sizeof *s->col_kind);
+    s->col_nt = malloc(3 * nc * sizeof *s->col_nt);
+    s->cohesion = calloc((size_t)npoints + 1, sizeof *s->cohesion);
+    s->mu = calloc((size_t)npoints + 1, sizeof *s->mu);
+    double *fL = calloc((size_t)s->nrows, sizeof *fL);
+    if (!s->cohesion || !s->mu || !s->colptr || !s->rowind || !s->val || !s->lo || !s->hi ||
+        !s->obj || !s->rhs || !s->col_point || !s->col_kind || !s->col_nt || !fL) {
+        free(fL);
+        goto oom;
+    }
+
+    int c = 0, nz = 0, point = 0;
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        int ncol = point_columns(in->mu, cone, nt, kind);
+        for (int q = 0; q < in->np; q++, point++) {
+            s->mu[point] = in->mu;
+            for (int e = 0; e < ncol; e++, c++) {
+                bl_vec3 f = bl_v3_add(bl_v3_scale(in->n3, nt[e][0]),
+                                      bl_v3_add(bl_v3_scale(in->t2, nt[e][1]),
+                                                bl_v3_scale(in->t3, nt[e][2])));
+                s->colptr[c] = nz;
+                s->lo[c] = kind[e] == BL_COL_SHEAR ? -INFINITY : 0.0;
+                s->hi[c] = INFINITY;
+                s->col_point[c] = point;
+                s->col_kind[c] = (signed char)kind[e];
+                memcpy(s->col_nt + 3 * c, nt[e], sizeof nt[e]);
+                /* f acts on b, -f on a: rows force x, y, z, moment x, y, z */
+                int blk[2] = {in->a, in->b};
+                for (int side = 0; side < 2; side++) {
+                    int r = s->block_row[blk[side]];
+                    if (r < 0) continue;
+                    double sg = side ? 1.0 : -1.0;
+                    bl_vec3 arm = bl_v3_scale(bl_v3_sub(in->poly[q], m->blocks[blk[side]].centroid3),
+                                              1.0 / s->L0);
+                    bl_vec3 mo = moment(arm, f);
+                    double v[6] = {f.x, f.y, f.z, mo.x, mo.y, mo.z};
+                    for (int i = 0; i < 6; i++)
+                        if (v[i] != 0.0) {
+                            s->rowind[nz] = r + i;
+                            s->val[nz++] = sg * v[i];
+                        }
+                }
+            }
+        }
+    }
+
+    /* self weight (dead, along -z) and the horizontal live load, at the
+     * centroids */
+    for (int i = 0; i < nb; i++) {
+        int r = s->block_row[i];
+        if (r < 0) continue;
+        double w = m->blocks[i].weight / s->W0;
+        if (m->self_weight) s->rhs[r + 2] += w;
+        if (m->live_weight) {
+            fL[r] += w * m->live_dir.x;
+            fL[r + 1] += w * m->live_dir.y;
+        }
+    }
+    s->colptr[c] = nz;
+    s->lo[c] = -INFINITY;
+    s->hi[c] = INFINITY;
+    s->obj[c] = 1.0;
+    s->col_point[c] = -1;
+    s->col_kind[c] = -1;
+    s->col_nt[3 * c] = s->col_nt[3 * c + 1] = s->col_nt[3 * c + 2] = 0.0;
+    for (int r = 0; r < s->nrows; r++)
+        if (fL[r] != 0.0) {
+            s->rowind[nz] = r;
+            s->val[nz++] = fL[r];
+        }
+    s->colptr[c + 1] = nz;
+    free(fL);
+    if (nz == s->colptr[c]) {
+        bl_system_free(s);
+        bl_error_set(err, "solve: the model has no live load; set one with "
+                          "load{ live = \"horizontal\" }");
+        return NULL;
+    }
+    return s;
+oom:
+    bl_system_free(s);
+    bl_error_set(err, "solve: out of memory assembling the equilibrium system");
+    return NULL;
+}
+
+void bl_system_forces3(const bl_system *s, const double *x, double *force)
+{
+    memset(force, 0, 3 * (size_t)s->npoints * sizeof *force);
+    for (int j = 0; j < s->nforce; j++)
+        for (int c = 0; c < 3; c++)
+            force[3 * s->col_point[j] + c] += s->W0 * x[j] * s->col_nt[3 * j + c];
+}
+
+void bl_system_mechanism3(const bl_system *s, const bl_model *m, const double *y, double *u)
+{
+    for (int i = 0; i < m->nblocks; i++) {
+        int r = s->block_row[i];
+        double *ui = u + 6 * i;
+        for (int c = 0; c < 6; c++)
+            ui[c] = r < 0 ? 0.0 : y[r + c] / (c < 3 ? s->W0 : s->W0 * s->L0);
+    }
+}
