@@ -13,13 +13,14 @@ return function(M)
 
   local function fail(msg) error("compare: " .. msg, 3) end
 
-  -- A block's velocity as (vx, vy, omega l), l the typical block size, so
-  -- that translation and rotation weigh alike.
+  -- A block's velocity as (vx, vy, omega l) in 2D, (v, omega l) in 3D, l
+  -- the typical block size, so that translation and rotation weigh alike.
   local function velocities(r, free, l)
     local v = {}
     for _, i in ipairs(free) do
       local u = r.mechanism[i]
-      v[#v + 1], v[#v + 2], v[#v + 3] = u[1], u[2], u[3] * l
+      local half = #u // 2
+      for c = 1, #u do v[#v + 1] = c > half and u[c] * l or u[c] end
     end
     return v
   end
@@ -83,7 +84,7 @@ return function(M)
       local b = m:block_info(i)
       if not b.support then
         free[#free + 1] = i
-        area, nfree = area + math.sqrt(b.area), nfree + 1
+        area, nfree = area + (b.volume and b.volume ^ (1 / 3) or math.sqrt(b.area)), nfree + 1
       end
     end
     local l = nfree > 0 and area / nfree or 1

@@ -100,8 +100,9 @@ function Interface.__tostring(k)
   return s
 end
 function Velocity.__tostring(u)
-  if #u == 6 then
-    return ("v = (%.4g, %.4g, %.4g), omega = (%.4g, %.4g, %.4g)"):format(table.unpack(u))
+  if #u == 6 then -- (+ 0.0 turns -0 into 0)
+    return ("v = (%.4g, %.4g, %.4g), omega = (%.4g, %.4g, %.4g)"):format(u[1] + 0.0, u[2] + 0.0,
+      u[3] + 0.0, u[4] + 0.0, u[5] + 0.0, u[6] + 0.0)
   end
   return ("vx = %.4g, vy = %.4g, omega = %.4g"):format(u[1], u[2], u[3])
 end
