@@ -5,12 +5,14 @@
 -- half-block course first (N = 32, 50, 100 give 1,040, 2,525 and 10,050
 -- blocks; N = 12, 162), or N = W1, W4, W5 (tests/lua/walls.lua); mu = 0.65,
 -- horizontal load proportional to weight.  Prints one line of key=value
--- pairs.
+-- pairs.  ENGINE "3d": the same wall in a 3D model, one block of depth
+-- 0.2 thick, the associative LP with the default pyramid (8 facets).
 package.path = (arg[0]:match("(.*/)") or "./") .. "../tests/lua/?.lua;" .. package.path
 local engine, n, limit = arg[1], tonumber(arg[2]), tonumber(arg[3])
 local clock = blocklim.clock
 local t0 = clock()
-model { mu = 0.65 }
+model { mu = 0.65, dim = engine == "3d" and 3 or 2 }
+local depth = engine == "3d" and 0.2 or nil
 if n then
   local E, U = { .5 }, {}
   for _ = 1, n - 1 do E[#E + 1] = 1 end
@@ -18,13 +20,14 @@ if n then
   for _ = 1, n do U[#U + 1] = 1 end
   local courses = {}
   for c = 1, n do courses[c] = c % 2 == 1 and E or U end
-  wall { courses = courses, unit = { 0.4, 0.175 } }
+  wall { courses = courses, unit = { 0.4, 0.175 }, depth = depth }
 else
-  wall { courses = require("walls")[arg[2]], unit = { 0.4, 0.175 } }
+  wall { courses = require("walls")[arg[2]], unit = { 0.4, 0.175 }, depth = depth }
 end
 local t1 = clock()
 local r = engine == "seqlp" and solve { flow = "nonassociative", time_limit = limit, progress = false }
   or engine == "mpec" and solve { method = "mpec", time_limit = limit, progress = false }
+  or engine == "3d" and solve { time_limit = limit }
   or solve { flow = "associative", lp = engine, time_limit = limit }
 local t = r.timings
 print(("method=%s n=%s blocks=%d interfaces=%d rows=%d columns=%d lp=%s lps=%d iterations=%d factor_nnz=%.0f status=%s "
