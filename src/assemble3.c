@@ -151,17 +151,34 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
         }
     }
 
-    /* self weight (dead, along -z) and the horizontal live load, at the
-     * centroids */
+    /* self weight (dead, along gravity) and the weight-proportional live
+     * load at the centroids; point forces with their moments, and couples */
+    bl_vec3 g = m->gravity3, d = m->live_dir3;
     for (int i = 0; i < nb; i++) {
         int r = s->block_row[i];
         if (r < 0) continue;
         double w = m->blocks[i].weight / s->W0;
-        if (m->self_weight) s->rhs[r + 2] += w;
-        if (m->live_weight) {
-            fL[r] += w * m->live_dir.x;
-            fL[r + 1] += w * m->live_dir.y;
+        if (m->self_weight) {
+            s->rhs[r] -= w * g.x;
+            s->rhs[r + 1] -= w * g.y;
+            s->rhs[r + 2] -= w * g.z;
         }
+        if (m->live_weight) {
+            fL[r] += w * d.x;
+            fL[r + 1] += w * d.y;
+            fL[r + 2] += w * d.z;
+        }
+    }
+    for (int l = 0; l < m->nloads; l++) {
+        const bl_point_load *pl = &m->loads[l];
+        int r = s->block_row[pl->block];
+        if (r < 0) continue;
+        bl_vec3 f = bl_v3_scale(pl->force3, 1.0 / s->W0);
+        bl_vec3 arm = bl_v3_scale(bl_v3_sub(pl->at3, m->blocks[pl->block].centroid3), 1.0 / s->L0);
+        bl_vec3 mo = bl_v3_add(moment(arm, f), bl_v3_scale(pl->moment3, 1.0 / (s->W0 * s->L0)));
+        double v[6] = {f.x, f.y, f.z, mo.x, mo.y, mo.z};
+        double *dst = pl->live ? fL : s->rhs, sg = pl->live ? 1.0 : -1.0;
+        for (int i = 0; i < 6; i++) dst[r + i] += sg * v[i];
     }
     s->colptr[c] = nz;
     s->lo[c] = -INFINITY;
@@ -180,7 +197,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
     if (nz == s->colptr[c]) {
         bl_system_free(s);
         bl_error_set(err, "solve: the model has no live load; set one with "
-                          "load{ live = \"horizontal\" }");
+                          "load{ live = \"horizontal\" } or a live point load");
         return NULL;
     }
     return s;

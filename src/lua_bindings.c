@@ -286,9 +286,13 @@ static int model_new(lua_State *L)
     check_fields(L, 1, "model", fields, 0);
     double dim = number_field(L, 1, "model", "dim", 2, POSITIVE);
     if (dim != 2 && dim != 3) fail(L, "model: field 'dim' must be 2 or 3, got %g", dim);
-    if (dim == 3 && (field_given(L, 1, "thickness") || field_given(L, 1, "gravity")))
-        fail(L, "model: fields 'thickness' and 'gravity' are for 2D models (a 3D block is "
-                "solid; gravity is -z)");
+    if (dim == 3 && field_given(L, 1, "thickness"))
+        fail(L, "model: field 'thickness' is for 2D models (a 3D block is solid)");
+    bl_vec3 g3 = bl_v3(0, 0, -1);
+    if (dim == 3 && field(L, 1, "gravity")) {
+        g3 = to_point3(L, "model", "field 'gravity'");
+        if (bl_v3_norm(g3) == 0) fail(L, "model: field 'gravity' must be a non-zero direction");
+    }
     const char *name = "";
     if (field(L, 1, "name")) {
         if (lua_type(L, -1) != LUA_TSTRING)
@@ -301,7 +305,7 @@ static int model_new(lua_State *L)
     double rho = number_field(L, 1, "model", "density", 1.0, POSITIVE);
     double th = number_field(L, 1, "model", "thickness", 1.0, POSITIVE);
     bl_vec2 g = bl_v2(0, -1);
-    if (point_field(L, 1, "model", "gravity", &g) && bl_v2_norm(g) == 0)
+    if (dim == 2 && point_field(L, 1, "model", "gravity", &g) && bl_v2_norm(g) == 0)
         fail(L, "model: field 'gravity' must be a non-zero direction");
 
     bl_model **p = lua_newuserdatauv(L, sizeof *p, 0);
@@ -317,6 +321,7 @@ static int model_new(lua_State *L)
     m->density = rho;
     m->thickness = th;
     m->gravity = bl_v2_scale(g, 1.0 / bl_v2_norm(g));
+    m->gravity3 = bl_v3_scale(g3, 1.0 / bl_v3_norm(g3));
     return 1;
 }
 
@@ -522,6 +527,78 @@ static int model_interface(lua_State *L)
     return 0;
 }
 
+/* load{} in a 3D model: the self weight along gravity; a live load
+ * proportional to weight along a horizontal {dx, dy} or any {dx, dy, dz}
+ * direction; point loads { block, at = {x, y, z}, force = {fx, fy, fz},
+ * moment = {mx, my, mz} } (a force, a couple, or both), dead or live. */
+static int load_3d(lua_State *L, bl_model *m)
+{
+    static const char *const point_fields[] = {"block", "at", "force", "moment", NULL};
+    static const char *const dead_choices[] = {"self-weight", "none", NULL};
+    static const char *const live_choices[] = {"horizontal", "none", NULL};
+    if (field_given(L, 2, "tilt"))
+        return fail(L, "load: field 'tilt' is not built for 3D models yet; turn gravity with "
+                       "model{ dim = 3, gravity = {x, y, z} }");
+    int kinds[2] = {-1, -1};
+    bl_point_load pl[2] = {{0}, {0}};
+    for (int k = 0; k < 2; k++) {
+        const char *f = k ? "live" : "dead";
+        if (!field(L, 2, f)) continue;
+        if (!lua_istable(L, -1)) {
+            lua_pop(L, 1);
+            kinds[k] = choice_field(L, 2, "load", f, k ? live_choices : dead_choices, 0);
+            continue;
+        }
+        char fn[32];
+        snprintf(fn, sizeof fn, "load %s", f);
+        int t = lua_gettop(L);
+        check_fields(L, t, fn, point_fields, 0);
+        if (!field(L, t, "block")) fail(L, "%s: field 'block' is missing", fn);
+        pl[k].block = block_index(L, m, -1, fn, "field 'block'");
+        lua_pop(L, 1);
+        if (m->blocks[pl[k].block].support)
+            fail(L, "%s: block %d is a support; loads on it do nothing", fn, pl[k].block + 1);
+        int has_force = field_given(L, t, "force"), has_moment = field_given(L, t, "moment");
+        if (!has_force && !has_moment)
+            fail(L, "%s: give field 'force' {fx, fy, fz} (at 'at'), 'moment' {mx, my, mz}, or both", fn);
+        pl[k].at3 = m->blocks[pl[k].block].centroid3;
+        if (field(L, t, "at")) pl[k].at3 = to_point3(L, fn, "field 'at'");
+        if (field(L, t, "force")) pl[k].force3 = to_point3(L, fn, "field 'force'");
+        if (field(L, t, "moment")) pl[k].moment3 = to_point3(L, fn, "field 'moment'");
+        pl[k].live = k;
+        kinds[k] = 2;
+        lua_pop(L, 1);
+    }
+    bl_vec3 dir = m->live_dir3;
+    if (field(L, 2, "direction")) {
+        if (kinds[1] != 0) fail(L, "load: field 'direction' goes with live = \"horizontal\"");
+        if (lua_istable(L, -1) && lua_rawlen(L, -1) == 2) {
+            bl_vec2 d = to_point(L, "load", "field 'direction'");
+            dir = bl_v3(d.x, d.y, 0.0);
+        } else {
+            dir = to_point3(L, "load", "field 'direction'");
+        }
+        if (bl_v3_norm(dir) == 0) fail(L, "load: field 'direction' must be a non-zero vector");
+    }
+    bl_error err;
+    for (int k = 0; k < 2; k++)
+        if (kinds[k] == 2 && bl_model_add_point_load(m, &pl[k], &err)) return fail(L, "%s", err.msg);
+    if (kinds[0] == 0) m->self_weight = 1;
+    if (kinds[0] == 1 || kinds[1] == 1) {
+        int live = kinds[1] == 1, n = 0;
+        if (live) m->live_weight = 0;
+        else m->self_weight = 0;
+        for (int i = 0; i < m->nloads; i++)
+            if (m->loads[i].live != live) m->loads[n++] = m->loads[i];
+        m->nloads = n;
+    }
+    if (kinds[1] == 0) {
+        m->live_weight = 1;
+        m->live_dir3 = bl_v3_scale(dir, 1.0 / bl_v3_norm(dir));
+    }
+    return 0;
+}
+
 static int model_load(lua_State *L)
 {
     static const char *const fields[] = {"dead", "live", "direction", "tilt", NULL};
@@ -530,14 +607,7 @@ static int model_load(lua_State *L)
     static const char *const live_choices[] = {"horizontal", "none", NULL};
     bl_model *m = check_model(L, 1);
     check_fields(L, 2, "load", fields, 0);
-    if (m->dim == 3) {
-        int point = 0;
-        for (int k = 0; k < 2; k++)
-            if (field(L, 2, k ? "live" : "dead")) point |= lua_istable(L, -1), lua_pop(L, 1);
-        if (point || field_given(L, 2, "tilt"))
-            fail(L, "load: point loads and tilt are not built for 3D models yet (self weight "
-                    "and a horizontal live load in any direction {dx, dy} are)");
-    }
+    if (m->dim == 3) return load_3d(L, m);
     int kinds[2] = {-1, -1}; /* dead, live: choice index, 2 = point load, -1 = absent */
     bl_point_load pl[2] = {{0}, {0}};
     for (int k = 0; k < 2; k++) {

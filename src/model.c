@@ -17,6 +17,8 @@ bl_model *bl_model_new(void)
     m->live_weight = 1;
     m->live_dir = bl_v2(1.0, 0.0);
     m->dim = 2;
+    m->gravity3 = bl_v3(0.0, 0.0, -1.0);
+    m->live_dir3 = bl_v3(1.0, 0.0, 0.0);
     return m;
 }
 

@@ -65,6 +65,7 @@ typedef struct bl_point_load {
     int block;
     bl_vec2 at, force;
     int live;
+    bl_vec3 at3, force3, moment3; /* 3D: point, force, and a couple */
 } bl_point_load;
 
 typedef struct bl_model {
@@ -89,6 +90,8 @@ typedef struct bl_model {
     int self_weight;     /* dead load: self weight along gravity */
     int live_weight;     /* live load: weight along live_dir */
     bl_vec2 live_dir;    /* unit */
+    bl_vec3 gravity3;    /* 3D: unit vector of the dead load, (0, 0, -1) by default */
+    bl_vec3 live_dir3;   /* 3D: unit vector of the live load, (1, 0, 0) by default */
     int nloads, cap_loads;
     bl_point_load *loads;
 } bl_model;

@@ -90,8 +90,7 @@ T.raises(function() block { vertices = cube, faces = { { 1, 2, 3 }, { 1, 2, 9 } 
 T.raises(function() block { vertices = cube, faces = faces, thickness = 1 } end,
          "thickness is refused in 3D", "block", "'thickness'")
 T.eq(count(), 6, "after the errors the model has the blocks it had")
-T.raises(function() load { live = { block = 1, at = { 0, 0, 0 }, force = { 1, 0, 0 } } } end,
-         "3D point loads are refused for now", "load", "3D")
+T.raises(function() load { tilt = 10 } end, "3D: tilt is refused for now", "load", "tilt", "3D")
 
 -- Interface detection: coplanar opposite faces and their overlap.
 local function areas()
@@ -240,6 +239,44 @@ local a0 = turned(0)
 for _, deg in ipairs { 30, 137 } do
   T.near(turned(deg), a0, 1e-6, ("W4 extruded, turned %d degrees about z with its load: alpha unchanged"):format(deg))
 end
+-- the whole model turned about an arbitrary axis, gravity and live load
+-- with it: the pyramids turn with the contact polygons, alpha stays
+local tmp = model { dim = 3, mu = 0.65 }
+wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
+local solids = {}
+for i = 1, 56 do solids[i] = tmp:block_info(i) end
+for _, cone in ipairs { { facets = 8 }, { facets = 4, kind = "circumscribed" } } do
+  local axis, angle = { 1, 2, 3 }, 0.7
+  model { dim = 3, mu = 0.65, gravity = rotate({ 0, 0, -1 }, axis, angle) }
+  for _, sb in ipairs(solids) do
+    local v = {}
+    for k, p in ipairs(sb.vertices) do v[k] = rotate(p, axis, angle) end
+    block { vertices = v, faces = sb.faces, support = sb.support }
+  end
+  load { live = "horizontal", direction = rotate({ 1, 0, 0 }, axis, angle) }
+  T.near(solve { cone = cone }.alpha, a0, 1e-6,
+         ("W4 extruded, turned 0.7 rad about (1, 2, 3) with gravity and load, %d facets %s: alpha unchanged")
+           :format(cone.facets, cone.kind or "inscribed"))
+end
+
+-- pure torque on one square contact of side a: four corner forces, each
+-- mu N / 4 at a / sqrt 2 from the centre, resist mu N a / sqrt 2 with the
+-- exact cone; the pyramids' factors follow from the corners' 45-degree
+-- tangents: 1 / sqrt 2 (4 facets inscribed), sqrt 2 (4 circumscribed),
+-- 1 (8 either way, an edge or a facet centre at 45 degrees)
+for _, case in ipairs { { 4, "inscribed", 1 / math.sqrt(2) }, { 4, "circumscribed", math.sqrt(2) },
+                        { 8, "inscribed", 1 }, { 8, "circumscribed", 1 } } do
+  model { dim = 3, mu = 0.6, density = 2 }
+  box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+  box { size = { 1, 1, 1 } }
+  load { live = "none" }
+  load { live = { block = 2, moment = { 0, 0, 1 } } }
+  local r = solve { cone = { facets = case[1], kind = case[2] } }
+  T.near(r.alpha, case[3] * 0.6 * 2 * 1 / math.sqrt(2), 1e-9,
+         ("pure torque on a square contact, %d facets %s: %.4f x mu N a / sqrt 2"):format(case[1],
+           case[2], case[3]))
+end
+
 T.raises(function() solve { flow = "nonassociative" } end, "3D: the non-associative flow is refused",
          "solve", "associative")
 T.raises(function() solve { cone = { facets = 2 } } end, "3D: a pyramid of 2 facets is refused",
