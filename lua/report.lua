@@ -75,18 +75,31 @@ local function picture(fmt)
     if type(file) ~= "string" then
       error(("%s: expects a file name, got %s"):format(fmt, type(file)), 2)
     end
-    local width
+    local width, az, el
     if opts ~= nil then
       if type(opts) ~= "table" then error(fmt .. ": options must be a table { width = ... }", 2) end
       for k in pairs(opts) do
-        if k ~= "width" then error(("%s: unknown field '%s' (fields: width)"):format(fmt, k), 2) end
+        if k ~= "width" and k ~= "view" then
+          error(("%s: unknown field '%s' (fields: width, view)"):format(fmt, k), 2)
+        end
       end
       width = opts.width
       if width ~= nil and (math.type(width) ~= "integer" or width < 100 or width > 20000) then
         error(fmt .. ": field 'width' must be an integer from 100 to 20000", 2)
       end
+      -- 3D: where from, {azimuth, elevation} in degrees or a named view
+      local views = { front = { 0, 0 }, back = { 180, 0 }, left = { -90, 0 }, right = { 90, 0 },
+                      top = { 0, 90 } }
+      local v = opts.view
+      if type(v) == "string" then v = views[v] end
+      if opts.view ~= nil and (type(v) ~= "table" or type(v[1]) ~= "number" or type(v[2]) ~= "number"
+                               or math.abs(v[2]) > 90) then
+        error(fmt .. ": field 'view' must be {azimuth, elevation} in degrees (elevation within " ..
+              "+-90) or one of \"front\", \"back\", \"left\", \"right\", \"top\"", 2)
+      end
+      if v then az, el = v[1], v[2] end
     end
-    report.draw(r._solution, file, fmt, width)
+    report.draw(r._solution, file, fmt, width, az, el)
   end
 end
 

@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define DEFAULT_WIDTH 1000
@@ -48,6 +49,9 @@ typedef struct pic {
     double font;
     double margin;        /* around the drawing and left of the caption */
     char caption[96];
+    /* 3D: the view (eye: towards the viewer; right and up: the canvas axes) */
+    int dim;
+    bl_vec3 eye, right, up;
     double caption_y, legend_x, legend_y;
     int has_legend;
 } pic;
@@ -84,6 +88,36 @@ static bl_vec2 moved(const pic *P, int b, bl_vec2 p)
     double s2 = fabs(a) < 1e-8 ? 0.5 * a : 2.0 * sin(0.5 * a) * sin(0.5 * a) / a;
     bl_vec2 t = bl_v2(P->k * (s1 * u[0] - s2 * u[1]), P->k * (s1 * u[1] + s2 * u[0]));
     return bl_v2(c.x + cs * r.x - sn * r.y + t.x, c.y + sn * r.x + cs * r.y + t.y);
+}
+
+/* 3D: the rigid motion of block b over "time" k under its constant
+ * velocity field (v, w), a screw: rotation by k w about the centroid, and
+ * the translation (k I + (1 - cos t)/|w|^2 W + (k - sin t/|w|)/|w|^2 W^2) v,
+ * t = k |w|, W the cross product by w: the exact integral, as in 2D. */
+static bl_vec3 moved3(const pic *P, int b, bl_vec3 p)
+{
+    if (!moves(P, b)) return p;
+    const double *u = P->s->u + 6 * b;
+    bl_vec3 v = bl_v3(u[0], u[1], u[2]), w = bl_v3(u[3], u[4], u[5]);
+    bl_vec3 c = P->m->blocks[b].centroid3, r = bl_v3_sub(p, c);
+    double wn = bl_v3_norm(w), t = P->k * wn;
+    if (t < 1e-9) return bl_v3_add(p, bl_v3_scale(bl_v3_add(v, bl_v3_cross(w, r)), P->k));
+    bl_vec3 a = bl_v3_scale(w, 1.0 / wn);
+    double cs = cos(t), sn = sin(t);
+    /* Rodrigues: r turned by t about a */
+    bl_vec3 rr = bl_v3_add(bl_v3_add(bl_v3_scale(r, cs), bl_v3_scale(bl_v3_cross(a, r), sn)),
+                           bl_v3_scale(a, bl_v3_dot(a, r) * (1.0 - cs)));
+    bl_vec3 wv = bl_v3_cross(w, v), wwv = bl_v3_cross(w, wv);
+    bl_vec3 tr = bl_v3_add(bl_v3_scale(v, P->k),
+                           bl_v3_add(bl_v3_scale(wv, (1.0 - cs) / (wn * wn)),
+                                     bl_v3_scale(wwv, (P->k - sn / wn) / (wn * wn))));
+    return bl_v3_add(c, bl_v3_add(rr, tr));
+}
+
+/* 3D: a point on the canvas plane, before scaling. */
+static bl_vec2 project(const pic *P, bl_vec3 x)
+{
+    return bl_v2(bl_v3_dot(x, P->right), bl_v3_dot(x, P->up));
 }
 
 static bl_vec2 dev(const pic *P, bl_vec2 p)
@@ -211,6 +245,14 @@ static double legend(cairo_t *cr, const pic *P, double x, double y, int draw)
     return x - x_start;
 }
 
+/* 3D: the velocity of block b at p, v + omega x (p - g). */
+static bl_vec3 velocity3(const bl_solution *s, int b, bl_vec3 p)
+{
+    const double *u = s->u + 6 * b;
+    bl_vec3 r = bl_v3_sub(p, s->model->blocks[b].centroid3);
+    return bl_v3_add(bl_v3(u[0], u[1], u[2]), bl_v3_cross(bl_v3(u[3], u[4], u[5]), r));
+}
+
 /* Largest vertex speed of the free blocks, 0 when u holds a NaN or an
  * infinity: such a mechanism cannot be drawn, the model still can. */
 static double max_speed(const bl_solution *s)
@@ -220,8 +262,10 @@ static double max_speed(const bl_solution *s)
     for (int b = 0; b < m->nblocks; b++) {
         const bl_block *B = &m->blocks[b];
         if (B->support) continue;
-        for (int i = 0; i < B->nv; i++) {
-            double d = speed(s, b, B->v[i]);
+        int nv = m->dim == 3 ? B->solid.nv : B->nv;
+        for (int i = 0; i < nv; i++) {
+            double d = m->dim == 3 ? bl_v3_norm(velocity3(s, b, B->solid.v[i]))
+                                   : speed(s, b, B->v[i]);
             if (!isfinite(d)) return 0.0;
             maxd = fmax(maxd, d);
         }
@@ -238,7 +282,18 @@ static void extent(pic *P, double box[4])
     P->k = P->maxd > 0.0 && size > 0.0 ? SHOW_FRACTION * size / P->maxd : 0.0;
     box[0] = box[1] = INFINITY;
     box[2] = box[3] = -INFINITY;
-    for (int b = 0; b < m->nblocks; b++) {
+    for (int b = 0; m->dim == 3 && b < m->nblocks; b++) {
+        const bl_polyhedron *S = &m->blocks[b].solid;
+        for (int i = 0; i < S->nv; i++)
+            for (int pass = 0; pass < 2; pass++) {
+                bl_vec2 q = project(P, pass ? moved3(P, b, S->v[i]) : S->v[i]);
+                box[0] = fmin(box[0], q.x);
+                box[1] = fmin(box[1], q.y);
+                box[2] = fmax(box[2], q.x);
+                box[3] = fmax(box[3], q.y);
+            }
+    }
+    for (int b = 0; m->dim == 2 && b < m->nblocks; b++) {
         const bl_block *B = &m->blocks[b];
         for (int i = 0; i < B->nv; i++)
             for (int pass = 0; pass < 2; pass++) {
@@ -252,10 +307,15 @@ static void extent(pic *P, double box[4])
 }
 
 /* Fixes the canvas size and where everything goes. */
-static void layout(pic *P, const bl_solution *s, int width)
+static void layout(pic *P, const bl_solution *s, int width, double azimuth, double elevation)
 {
     memset(P, 0, sizeof *P);
     P->s = s;
+    P->dim = s->model ? s->model->dim : 2;
+    double az = azimuth * M_PI / 180.0, el = elevation * M_PI / 180.0;
+    P->eye = bl_v3(sin(az) * cos(el), -cos(az) * cos(el), sin(el));
+    P->right = bl_v3(cos(az), sin(az), 0.0);
+    P->up = bl_v3_cross(P->eye, P->right);
     P->m = s->model && s->model->nblocks > 0 ? s->model : NULL;
     P->w = width;
     P->unit = fmax(0.6, width / 1000.0);
@@ -280,7 +340,7 @@ static void layout(pic *P, const bl_solution *s, int width)
     const char *name = bl_status_name(s->status);
     snprintf(P->caption, sizeof P->caption, "alpha = %.5g  (%s, %s flow, %s%s)", s->alpha,
              name ? name : "?", s->flow, s->method, s->verified ? ", verified" : "");
-    P->has_legend = P->m && P->k > 0.0;
+    P->has_legend = P->m && P->k > 0.0 && P->dim == 2;
 
     /* text widths need a cairo context; a 1x1 image gives the same metrics
      * as the real surfaces for the toy font API */
@@ -305,6 +365,77 @@ static void layout(pic *P, const bl_solution *s, int width)
     P->h = ceil(P->legend_y + 0.6 * P->font + 0.5 * margin);
 }
 
+/* A visible face of a 3D block, for the painter's algorithm. */
+typedef struct face3 {
+    int block, face;
+    double depth, light;
+} face3;
+
+static int farther(const void *x, const void *y)
+{
+    double a = ((const face3 *)x)->depth, b = ((const face3 *)y)->depth;
+    return (a > b) - (a < b);
+}
+
+/* 3D: the blocks as moved by the mechanism, seen along the view: faces
+ * turned away are dropped, the others painted far to near, shaded by how
+ * squarely they face the light (from the viewer's upper left); supports
+ * grey, moving blocks terracotta, still ones pale. */
+static void draw3(cairo_t *cr, const pic *P)
+{
+    const bl_model *m = P->m;
+    int nf = 0;
+    for (int b = 0; b < m->nblocks; b++) nf += m->blocks[b].solid.nf;
+    face3 *F = malloc(((size_t)nf + 1) * sizeof *F);
+    if (!F) return;
+    bl_vec3 light = bl_v3_add(bl_v3_add(bl_v3_scale(P->eye, 0.8), bl_v3_scale(P->up, 0.5)),
+                              bl_v3_scale(P->right, -0.35));
+    light = bl_v3_scale(light, 1.0 / bl_v3_norm(light));
+    int n = 0;
+    for (int b = 0; b < m->nblocks; b++) {
+        const bl_polyhedron *S = &m->blocks[b].solid;
+        for (int k = 0; k < S->nf; k++) {
+            /* the face as moved: its normal from three of its corners */
+            int a0 = S->fs[k], len = S->fs[k + 1] - a0;
+            bl_vec3 c = {0, 0, 0}, nrm = {0, 0, 0};
+            for (int i = 0; i < len; i++) {
+                bl_vec3 p = moved3(P, b, S->v[S->fi[a0 + i]]);
+                bl_vec3 q = moved3(P, b, S->v[S->fi[a0 + (i + 1) % len]]);
+                c = bl_v3_add(c, p);
+                nrm = bl_v3_add(nrm, bl_v3_cross(p, q));
+            }
+            double nn = bl_v3_norm(nrm);
+            if (!(nn > 0.0) || bl_v3_dot(nrm, P->eye) <= 0.0) continue;
+            nrm = bl_v3_scale(nrm, 1.0 / nn);
+            F[n++] = (face3){b, k, bl_v3_dot(c, P->eye) / len, fabs(bl_v3_dot(nrm, light))};
+        }
+    }
+    qsort(F, (size_t)n, sizeof *F, farther);
+    for (int t = 0; t < n; t++) {
+        int b = F[t].block, k = F[t].face;
+        const bl_block *B = &m->blocks[b];
+        const bl_polyhedron *S = &B->solid;
+        double d = 0.0;
+        for (int i = 0; P->k > 0.0 && !B->support && i < S->nv; i++)
+            d = fmax(d, bl_v3_norm(velocity3(P->s, b, S->v[i])));
+        rgb base = B->support ? SUPPORT_FILL
+                   : d >= STILL_FRACTION * P->maxd && P->k > 0.0 ? MOVING : STILL;
+        double shade = 0.55 + 0.45 * F[t].light;
+        cairo_new_path(cr);
+        for (int i = S->fs[k]; i < S->fs[k + 1]; i++) {
+            bl_vec2 q = dev(P, project(P, moved3(P, b, S->v[S->fi[i]])));
+            cairo_line_to(cr, q.x, q.y);
+        }
+        cairo_close_path(cr);
+        cairo_set_source_rgb(cr, base.r * shade, base.g * shade, base.b * shade);
+        cairo_fill_preserve(cr);
+        color(cr, B->support ? SUPPORT_EDGE : BLOCK_EDGE);
+        cairo_set_line_width(cr, 0.9 * P->unit);
+        cairo_stroke(cr);
+    }
+    free(F);
+}
+
 static void draw(cairo_t *cr, const pic *P)
 {
     cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
@@ -320,6 +451,8 @@ static void draw(cairo_t *cr, const pic *P)
         color(cr, GHOST);
         cairo_move_to(cr, 0.5 * (P->w - te.x_advance), P->top + 0.5 * P->dh);
         cairo_show_text(cr, empty);
+    } else if (P->dim == 3) {
+        draw3(cr, P);
     } else {
         const bl_solution *s = P->s;
         if (P->k > 0.0) {
@@ -416,11 +549,13 @@ static int finish(sink *o, cairo_status_t st, const char *kind, const char *file
     return bl_error_set(err, "%s: cannot write '%s': %s", kind, file, why);
 }
 
-int bl_draw_svg(const bl_solution *s, const char *file, int width, bl_error *err)
+int bl_draw_svg(const bl_solution *s, const char *file, int width, const bl_view *view,
+                bl_error *err)
 {
     if (check(s, "svg", file, &width, err)) return -1;
     pic P;
-    layout(&P, s, width);
+    layout(&P, s, width, view ? view->azimuth : BL_VIEW_AZIMUTH,
+           view ? view->elevation : BL_VIEW_ELEVATION);
     sink o;
     if (start(&o, "svg", file, err)) return -1;
     cairo_surface_t *sf = cairo_svg_surface_create_for_stream(put, &o, P.w, P.h);
@@ -438,13 +573,15 @@ int bl_draw_svg(const bl_solution *s, const char *file, int width, bl_error *err
     return finish(&o, st, "svg", file, err);
 }
 
-int bl_draw_png(const bl_solution *s, const char *file, int width, bl_error *err)
+int bl_draw_png(const bl_solution *s, const char *file, int width, const bl_view *view,
+                bl_error *err)
 {
     if (check(s, "png", file, &width, err)) return -1;
     if (width > PNG_MAX_SIDE)
         return bl_error_set(err, "png: width %d is larger than %d pixels", width, PNG_MAX_SIDE);
     pic P;
-    layout(&P, s, width);
+    layout(&P, s, width, view ? view->azimuth : BL_VIEW_AZIMUTH,
+           view ? view->elevation : BL_VIEW_ELEVATION);
     if (P.h > PNG_MAX_SIDE)
         return bl_error_set(err, "png: picture height %.0f is larger than %d pixels", P.h,
                             PNG_MAX_SIDE);

@@ -1146,18 +1146,17 @@ static int solution_gc(lua_State *L)
     return 0;
 }
 
-/* core.draw(solution, file, format, width) */
+/* core.draw(solution, file, format, width, azimuth, elevation) */
 static int core_draw(lua_State *L)
 {
     bl_solution **p = luaL_checkudata(L, 1, SOLUTION_MT);
-    if ((*p)->model->dim == 3)
-        return fail(L, "%s: pictures of 3D models are not built yet", luaL_checkstring(L, 3));
     const char *file = luaL_checkstring(L, 2);
     const char *fmt = luaL_checkstring(L, 3);
     int width = (int)luaL_optinteger(L, 4, 0);
+    bl_view view = {luaL_optnumber(L, 5, BL_VIEW_AZIMUTH), luaL_optnumber(L, 6, BL_VIEW_ELEVATION)};
     bl_error err;
-    int rc = strcmp(fmt, "svg") == 0 ? bl_draw_svg(*p, file, width, &err)
-                                     : bl_draw_png(*p, file, width, &err);
+    int rc = strcmp(fmt, "svg") == 0 ? bl_draw_svg(*p, file, width, &view, &err)
+                                     : bl_draw_png(*p, file, width, &view, &err);
     if (rc) return fail(L, "%s", err.msg);
     return 0;
 }

@@ -29,4 +29,27 @@ T.raises(function() r:png("/nonexistent/dir/x.png") end, "png: unwritable file r
 T.raises(function() r:svg(42) end, "svg: file name checked", "svg")
 T.raises(function() r:png(png, { size = 3 }) end, "png: unknown option", "unknown field 'size'")
 os.remove(svg); os.remove(png)
+
+-- 3D: a projection of the moved blocks, from a chosen view
+model { dim = 3, mu = 0.65 }
+wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
+local r3 = solve {}
+for _, view in ipairs { "front", { 30, 20 } } do
+  os.remove(png)
+  r3:png(png, { width = 500, view = view })
+  f = io.open(png, "rb")
+  head = f and f:read(24) or ""
+  if f then f:close() end
+  w = 0
+  for i = 17, 20 do w = w * 256 + (head:byte(i) or 0) end
+  T.ok(head:sub(1, 8) == "\137PNG\r\n\26\n" and w == 500,
+       ("3D png from view %s: a PNG 500 wide"):format(type(view) == "table" and "{30, 20}" or view))
+end
+r3:svg(svg, { view = "top" })
+f = io.open(svg, "rb")
+text = f and f:read("a") or ""
+if f then f:close() end
+T.ok(text:find("</svg>", 1, true), "3D svg from the top: a complete SVG document")
+T.raises(function() r3:png(png, { view = { 0, 120 } }) end, "3D: a view above the zenith is refused", "view")
+os.remove(svg); os.remove(png)
 T.done()
