@@ -8,7 +8,8 @@ local tmp = os.getenv("TMPDIR") or "/tmp"
 local expected = {
   w1 = 0.64286, w4 = 0.33195, w5 = 0.23964, block = 0.4,
 }
-for _, name in ipairs { "w1", "w4", "w5", "block", "arch" } do
+local results = {}
+for _, name in ipairs { "w1", "w4", "w5", "block", "arch", "facade" } do
   local png = ("%s/blocklim_model_%s.png"):format(tmp, name)
   os.remove(png)
   arg = { [0] = dir .. "models/" .. name .. ".lua", png }
@@ -22,5 +23,11 @@ for _, name in ipairs { "w1", "w4", "w5", "block", "arch" } do
   T.ok(f and f:read(4) == "\137PNG", name .. ": picture written")
   if f then f:close() end
   os.remove(png)
+  results[name] = r
 end
+-- the facade with its returns: never weaker than the facade standing alone
+-- (t/h = 0.2/1.6), and the interior point agrees with the simplex
+local f3 = results.facade
+T.ok(f3.alpha >= 0.2 / 1.6, "facade: the return walls help (alpha >= t/h = 0.125)", tostring(f3.alpha))
+T.near(solve { lp = "ipm" }.alpha, f3.alpha, 1e-6, "facade: the interior point gives the simplex alpha")
 T.done()
