@@ -14,6 +14,7 @@ return function(core)
     return report.wrap(r)
   end
   report.draw = core.draw
+  report.vtk = core.vtk
 
   -- The latest result, kept also when Ctrl-C stopped the solve.
   function M.last()

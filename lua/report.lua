@@ -106,6 +106,12 @@ end
 Result.svg = picture("svg")
 Result.png = picture("png")
 
+-- r:vtk(file): a 3D result for ParaView (src/vtk.h says what it holds).
+function Result.vtk(r, file)
+  if type(file) ~= "string" then error(("vtk: expects a file name, got %s"):format(type(file)), 2) end
+  report.vtk(r._solution, file)
+end
+
 -- One line per interface and per block velocity, for the prompt.
 function Interface.__tostring(k)
   local s = ("interface %d-%d: %s, N = %.4g, T = %.4g"):format(k.a, k.b, k.state, k.N, k.T)

@@ -20,6 +20,7 @@
 
 #include "assoc.h"
 #include "mpec.h"
+#include "vtk.h"
 #include "seqlp.h"
 #include "contact.h"
 #include "draw.h"
@@ -1161,6 +1162,16 @@ static int core_draw(lua_State *L)
     return 0;
 }
 
+/* core.vtk(solution, file) */
+static int core_vtk(lua_State *L)
+{
+    bl_solution **p = luaL_checkudata(L, 1, SOLUTION_MT);
+    const char *file = luaL_checkstring(L, 2);
+    bl_error err;
+    if (bl_write_vtk(*p, file, &err)) return fail(L, "%s", err.msg);
+    return 0;
+}
+
 /* core.clock() -> wall-clock seconds, for timing scripts */
 static int core_clock(lua_State *L)
 {
@@ -1197,7 +1208,7 @@ int luaopen_blocklim(lua_State *L)
         {"block_info", model_block_info}, {"dim", model_dim},
         {"interface_info", model_interface_info}, {NULL, NULL}};
     static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw},
-                                     {"clock", core_clock}, {"last", core_last},
+                                     {"clock", core_clock}, {"last", core_last}, {"vtk", core_vtk},
                                      {NULL, NULL}};
 
     if (luaL_newmetatable(L, MODEL_MT)) {

@@ -52,4 +52,26 @@ if f then f:close() end
 T.ok(text:find("</svg>", 1, true), "3D svg from the top: a complete SVG document")
 T.raises(function() r3:png(png, { view = { 0, 120 } }) end, "3D: a view above the zenith is refused", "view")
 os.remove(svg); os.remove(png)
+
+-- VTK: a block 0.5 x 1 x 1 (weight 0.5) rocking at alpha = b/h = 0.5; the
+-- interface force on it balances its weight and the live load, (-0.25, 0, 0.5)
+local vtk = dir .. "/blocklim_test.vtk"
+model { dim = 3, mu = 0.6 }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 0.5, 1, 1 } }
+solve {}:vtk(vtk)
+f = io.open(vtk, "r")
+text = f and f:read("a") or ""
+if f then f:close() end
+local npts = tonumber(text:match("POINTS (%d+) double"))
+local ncells, nidx = text:match("POLYGONS (%d+) (%d+)")
+T.ok(text:find("^# vtk DataFile Version 3.0\n") and npts == 8 + 8 + 4 and tonumber(ncells) == 6 + 6 + 1,
+     "vtk: a legacy POLYDATA file, the points and cells of two boxes and one contact polygon")
+local last = text:match("VECTORS force double\n.-([^\n]+)\n$")
+local fx, fy, fz = table.unpack(last and { last:match("(%S+) (%S+) (%S+)") } or {})
+fx, fy, fz = tonumber(fx), tonumber(fy), tonumber(fz)
+T.ok(fx and math.abs(fx + 0.25) < 1e-9 and math.abs(fy) < 1e-9 and math.abs(fz - 0.5) < 1e-9,
+     "vtk: the interface force balances the block's weight and its live load", last)
+T.raises(function() r:vtk(vtk) end, "vtk: a 2D result is refused", "vtk", "3D")
+os.remove(vtk)
 T.done()
