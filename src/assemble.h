@@ -27,10 +27,15 @@ typedef enum bl_column_kind {
 /* How a 3D contact point's Coulomb cone becomes linear: a pyramid of
  * `facets` edges (3 to 64), on the cone (inscribed: less friction than the
  * cone) or around it (circumscribed: more), an edge or a facet centred on
- * the contact polygon's first edge t2. */
+ * the contact polygon's first edge t2; adaptive: the inscribed pyramid with
+ * edges added on the cone along the slip of every previous LP (assoc.c). */
 typedef struct bl_cone {
     int facets;
     int circumscribed;
+    int adaptive;          /* add edges along each point's slip, LP by LP */
+    int nextra;            /* room for added edges per contact point */
+    const int *extra_n;    /* per contact point: edges added, or NULL */
+    const double *extra;   /* their angles from t2: nextra per point */
 } bl_cone;
 
 /* How friction enters the system.  BL_FRICTION_CONE: the Coulomb cone of
@@ -73,6 +78,11 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
  * the mechanism (vx, vy, vz, wx, wy, wz per block) from y. */
 void bl_system_forces3(const bl_system *s, const double *x, double *force);
 void bl_system_mechanism3(const bl_system *s, const bl_model *m, const double *y, double *u);
+
+/* 3D: the tangential relative velocity of every contact point (slip of b
+ * on a, components along t2 and t3) from the row multipliers y, in the
+ * scaled units of y. */
+void bl_system_slip3(const bl_system *s, const bl_model *m, const double *y, double *slip);
 
 /* For a BL_FRICTION_FIXED system: the bounds of every column when the
  * contact points carry the normal forces n (per point, scaled by W0):

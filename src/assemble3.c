@@ -14,7 +14,8 @@
  * it) or circumscribed (its facets touching it, a facet centred on t2);
  * the normal alone without friction; the normal and two free shears when
  * joints cannot slide.  Returns the number of columns. */
-static int point_columns(double mu, const bl_cone *cone, double nt[][3], bl_column_kind *kind)
+static int point_columns(double mu, const bl_cone *cone, int point, double nt[][3],
+                         bl_column_kind *kind)
 {
     if (isinf(mu)) {
         double d[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -28,17 +29,17 @@ static int point_columns(double mu, const bl_cone *cone, double nt[][3], bl_colu
         kind[0] = BL_COL_NORMAL;
         return 1;
     }
-    int k = cone->facets;
+    int k = cone->facets, added = cone->extra_n ? cone->extra_n[point] : 0;
     double r = cone->circumscribed ? mu / cos(M_PI / k) : mu;
     double shift = cone->circumscribed ? M_PI / k : 0.0;
-    for (int e = 0; e < k; e++) {
-        double th = 2.0 * M_PI * e / k + shift;
+    for (int e = 0; e < k + added; e++) {
+        double th = e < k ? 2.0 * M_PI * e / k + shift : cone->extra[point * cone->nextra + e - k];
         nt[e][0] = 1.0;
         nt[e][1] = r * cos(th);
         nt[e][2] = r * sin(th);
         kind[e] = BL_COL_PYRAMID;
     }
-    return k;
+    return k + added;
 }
 
 /* a x b, with the components below their own round-off set to zero (as in
@@ -78,8 +79,8 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
     s->L0 = lsum / nb;
     s->nrows = 6 * nfree;
 
-    double nt[64][3];
-    bl_column_kind kind[64];
+    double nt[128][3];
+    bl_column_kind kind[128];
     int nforce = 0, npoints = 0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
@@ -89,8 +90,8 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
                               "blocks %d and %d)", in->a + 1, in->b + 1);
             return NULL;
         }
-        nforce += in->np * point_columns(in->mu, cone, nt, kind);
-        npoints += in->np;
+        for (int q = 0; q < in->np; q++, npoints++)
+            nforce += point_columns(in->mu, cone, npoints, nt, kind);
     }
     s->nforce = nforce;
     s->ncols = nforce + 1;
@@ -118,8 +119,8 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
     int c = 0, nz = 0, point = 0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
-        int ncol = point_columns(in->mu, cone, nt, kind);
         for (int q = 0; q < in->np; q++, point++) {
+            int ncol = point_columns(in->mu, cone, point, nt, kind);
             s->mu[point] = in->mu;
             for (int e = 0; e < ncol; e++, c++) {
                 bl_vec3 f = bl_v3_add(bl_v3_scale(in->n3, nt[e][0]),
@@ -222,5 +223,30 @@ void bl_system_mechanism3(const bl_system *s, const bl_model *m, const double *y
         double *ui = u + 6 * i;
         for (int c = 0; c < 6; c++)
             ui[c] = r < 0 ? 0.0 : y[r + c] / (c < 3 ? s->W0 : s->W0 * s->L0);
+    }
+}
+
+void bl_system_slip3(const bl_system *s, const bl_model *m, const double *y, double *slip)
+{
+    int point = 0;
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        for (int q = 0; q < in->np; q++, point++) {
+            /* velocity of each side at the point: v + w x (p - g) / L0 (the
+             * moment rows were scaled by 1/L0) */
+            bl_vec3 d = {0, 0, 0};
+            int blk[2] = {in->a, in->b};
+            for (int side = 0; side < 2; side++) {
+                int r = s->block_row[blk[side]];
+                if (r < 0) continue;
+                bl_vec3 arm = bl_v3_scale(bl_v3_sub(in->poly[q], m->blocks[blk[side]].centroid3),
+                                          1.0 / s->L0);
+                bl_vec3 v = bl_v3_add(bl_v3(y[r], y[r + 1], y[r + 2]),
+                                      bl_v3_cross(bl_v3(y[r + 3], y[r + 4], y[r + 5]), arm));
+                d = side ? bl_v3_add(d, v) : bl_v3_sub(d, v);
+            }
+            slip[2 * point] = bl_v3_dot(d, in->t2);
+            slip[2 * point + 1] = bl_v3_dot(d, in->t3);
+        }
     }
 }

@@ -1,5 +1,6 @@
 #include "assoc.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,8 +17,7 @@ void bl_solve_options_default(bl_solve_options *o)
     o->iterations = 0;
     o->lp = BL_LP_AUTO;
     o->mps = NULL;
-    o->cone.facets = 8;
-    o->cone.circumscribed = 0;
+    o->cone = (bl_cone){.facets = 8};
 }
 
 bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const double *obj,
@@ -44,25 +44,74 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     bl_model *copy = bl_model_copy(m);
     bl_solution *s = copy ? bl_solution_new(copy) : NULL;
     if (!s) return bl_error_set(err, "solve: out of memory");
-    bl_system *sys = m->dim == 3 ? bl_system_build3(m, &o->cone, err)
-                                 : bl_system_build(m, BL_FRICTION_CONE, err);
-    if (!sys) {
-        bl_solution_free(s);
-        return -1;
+    /* 3D with the adaptive cone: the inscribed pyramid of every point gets
+     * an edge along the slip the previous LP found there, until alpha
+     * settles; edges are only added, so alpha rises towards the exact
+     * cone's (doc/theory.md 3.3) */
+    enum { ROUNDS = 40 };
+    bl_cone cone = o->cone;
+    double *extra = NULL, *slip = NULL;
+    int *extra_n = NULL, np = 0;
+    for (int k = 0; k < m->ninterfaces; k++) np += m->interfaces[k].np;
+    if (m->dim == 3 && cone.adaptive) {
+        extra = calloc((size_t)np * ROUNDS + 1, sizeof *extra);
+        extra_n = calloc((size_t)np + 1, sizeof *extra_n);
+        slip = calloc(2 * (size_t)np + 1, sizeof *slip);
+        if (!extra || !extra_n || !slip) {
+            free(extra), free(extra_n), free(slip);
+            bl_solution_free(s);
+            return bl_error_set(err, "solve: out of memory");
+        }
+        cone.circumscribed = 0;
+        cone.nextra = ROUNDS;
+        cone.extra = extra;
+        cone.extra_n = extra_n;
     }
-    bl_lp_problem p = {sys->nrows, sys->ncols, sys->colptr, sys->rowind, sys->val,
-                       sys->lo,    sys->hi,    sys->rhs,    sys->obj};
-    bl_lp *lp = o->mps && bl_lp_write_mps(&p, o->mps, err)
-                    ? NULL
-                    : bl_solve_lp(sys, sys->lo, sys->hi, NULL, o, err);
+    bl_system *sys = NULL;
+    bl_lp *lp = NULL;
+    bl_lp_status st = BL_LP_FAILED;
+    double t2 = bl_clock(), t3 = t2, prev = NAN, solve_time = 0.0;
+    for (int round = 1;; round++) {
+        sys = m->dim == 3 ? bl_system_build3(m, &cone, err) : bl_system_build(m, BL_FRICTION_CONE, err);
+        if (!sys) break;
+        bl_lp_problem p = {sys->nrows, sys->ncols, sys->colptr, sys->rowind, sys->val,
+                           sys->lo,    sys->hi,    sys->rhs,    sys->obj};
+        lp = o->mps && bl_lp_write_mps(&p, o->mps, err) ? NULL
+                                                       : bl_solve_lp(sys, sys->lo, sys->hi, NULL, o, err);
+        if (!lp) break;
+        t2 = bl_clock();
+        st = bl_lp_solve(lp);
+        t3 = bl_clock();
+        solve_time += t3 - t2;
+        s->cone_rounds = round;
+        s->cone = o->cone;
+        s->cone.extra = NULL;
+        s->cone.extra_n = NULL;
+        if (!extra || st != BL_LP_OPTIMAL || round == ROUNDS) break;
+        /* the slip of every contact point (from the mechanism: the forces
+         * sit on corners of the pyramid); the friction on b opposes it */
+        double a = bl_lp_primal(lp)[sys->nforce], smax = 0.0;
+        if (fabs(a - prev) <= 1e-9 * fmax(1.0, fabs(a))) break;
+        prev = a;
+        bl_system_slip3(sys, m, bl_lp_dual(lp), slip);
+        for (int q = 0; q < np; q++) smax = fmax(smax, hypot(slip[2 * q], slip[2 * q + 1]));
+        for (int q = 0; q < np; q++)
+            if (hypot(slip[2 * q], slip[2 * q + 1]) > 1e-6 * smax)
+                extra[q * ROUNDS + extra_n[q]++] = atan2(-slip[2 * q + 1], -slip[2 * q]);
+        bl_lp_free(lp);
+        bl_system_free(sys);
+        lp = NULL;
+        sys = NULL;
+    }
+    free(extra);
+    free(extra_n);
+    free(slip);
     if (!lp) {
         bl_system_free(sys);
         bl_solution_free(s);
         return -1;
     }
-    double t2 = bl_clock();
-    bl_lp_status st = bl_lp_solve(lp);
-    double t3 = bl_clock();
+    t2 = t3 - solve_time;
 
     s->status = bl_status_of_lp(st);
     s->lp = bl_lp_engine(lp);

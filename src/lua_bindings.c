@@ -842,6 +842,14 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         lua_setfield(L, -2, "ipopt");
         if (strcmp(s->flow, "nonassociative") == 0) set_number(L, "slip", s->slip);
     }
+    if (m->dim == 3 && s->cone_rounds > 0) {
+        lua_createtable(L, 0, 3);
+        set_integer(L, "facets", s->cone.facets);
+        set_string(L, "kind", s->cone.adaptive ? "adaptive"
+                              : s->cone.circumscribed ? "circumscribed" : "inscribed");
+        set_integer(L, "rounds", s->cone_rounds);
+        lua_setfield(L, -2, "cone");
+    }
     set_string(L, "lp", s->lp ? s->lp : "");
     set_integer(L, "iterations", s->iterations);
     set_number(L, "tolerance", s->tolerance);
@@ -1077,7 +1085,7 @@ static int model_solve(lua_State *L)
     o.iterations = (int)iters;
     if (field(L, 2, "cone")) {
         static const char *const cone_fields[] = {"facets", "kind", NULL};
-        static const char *const kinds[] = {"inscribed", "circumscribed", NULL};
+        static const char *const kinds[] = {"inscribed", "circumscribed", "adaptive", NULL};
         if (m->dim != 3) fail(L, "solve: field 'cone' is for 3D models");
         if (!lua_istable(L, -1))
             fail(L, "solve: field 'cone' must be a table { facets = 8, kind = \"inscribed\" }");
@@ -1087,7 +1095,9 @@ static int model_solve(lua_State *L)
         if (k != floor(k) || k < 3 || k > 64)
             fail(L, "solve cone: field 'facets' must be an integer from 3 to 64, got %g", k);
         o.cone.facets = (int)k;
-        o.cone.circumscribed = choice_field(L, ct, "solve cone", "kind", kinds, 0);
+        int kind = choice_field(L, ct, "solve cone", "kind", kinds, 0);
+        o.cone.circumscribed = kind == 1;
+        o.cone.adaptive = kind == 2;
         lua_pop(L, 1);
     }
     if (method == MPEC && iters > 0) {

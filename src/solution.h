@@ -8,6 +8,7 @@
 
 #include "lp.h"
 #include "model.h"
+#include "assemble.h"
 
 typedef enum bl_status {
     BL_OPTIMAL,      /* alpha >= 0 found */
@@ -77,6 +78,8 @@ typedef struct bl_solution {
     int verified;
     bl_timings time;
     int iterations;          /* LP engine iterations */
+    int cone_rounds;         /* 3D: LPs solved (more than 1 with the adaptive cone) */
+    bl_cone cone;            /* 3D: the pyramid used (theta0 not kept) */
     int rows, cols;          /* size of the LP */
     double factor_nnz;       /* interior point: non-zeros of the Cholesky factor */
     const char *lp;          /* engine name, static */

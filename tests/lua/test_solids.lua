@@ -277,6 +277,45 @@ for _, case in ipairs { { 4, "inscribed", 1 / math.sqrt(2) }, { 4, "circumscribe
            case[2], case[3]))
 end
 
+-- the adaptive cone: edges added along the slip reach the exact cone's
+-- answer from any pyramid: the torque's mu N a / sqrt 2, and sliding along
+-- a diagonal at alpha = mu (4 facets: 0.7071 mu inscribed, 1.414 mu around)
+for _, k in ipairs { 3, 4 } do
+  model { dim = 3, mu = 0.6, density = 2 }
+  box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+  box { size = { 1, 1, 1 } }
+  load { live = "none" }
+  load { live = { block = 2, moment = { 0, 0, 1 } } }
+  local r = solve { cone = { facets = k, kind = "adaptive" } }
+  T.near(r.alpha, 0.6 * 2 / math.sqrt(2), 1e-8,
+         ("pure torque, adaptive cone from %d facets: the exact mu N a / sqrt 2 (%d LPs)"):format(k, r.cone.rounds))
+end
+model { dim = 3, mu = 0.3 }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 1 } }
+load { live = "horizontal", direction = { 1, 1 } }
+T.near(solve { cone = { facets = 4, kind = "adaptive" } }.alpha, 0.3, 1e-9,
+       "a box sliding along a diagonal, adaptive cone: alpha = mu")
+T.near(solve { cone = { facets = 4 } }.alpha, 0.3 / math.sqrt(2), 1e-9,
+       "the same with the 4-facet inscribed pyramid: mu / sqrt 2")
+-- the diagonal slide turned about an arbitrary axis with gravity and load
+local axis, angle = { 2, -1, 0.5 }, 1.1
+local spec_list = { { { 3, 3, 0.5 }, { 0, 0, -0.5 }, true }, { { 1, 1, 1 }, { 0, 0, 0 } } }
+for _, spec in ipairs(spec_list) do
+  local t = model { dim = 3 }
+  local bi = t:block_info(box { size = spec[1], at = spec[2] })
+  spec.v, spec.f = bi.vertices, bi.faces
+end
+model { dim = 3, mu = 0.3, gravity = rotate({ 0, 0, -1 }, axis, angle) }
+for _, spec in ipairs(spec_list) do
+  local v = {}
+  for k, p in ipairs(spec.v) do v[k] = rotate(p, axis, angle) end
+  block { vertices = v, faces = spec.f, support = spec[3] }
+end
+load { live = "horizontal", direction = rotate({ 1 / math.sqrt(2), 1 / math.sqrt(2), 0 }, axis, angle) }
+T.near(solve { cone = { facets = 4, kind = "adaptive" } }.alpha, 0.3, 1e-9,
+       "the diagonal slide turned about (2, -1, 0.5), adaptive cone: still alpha = mu")
+
 T.raises(function() solve { flow = "nonassociative" } end, "3D: the non-associative flow is refused",
          "solve", "associative")
 T.raises(function() solve { cone = { facets = 2 } } end, "3D: a pyramid of 2 facets is refused",
