@@ -9,23 +9,38 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Unit force directions (n, t2, t3 components) of the columns at a contact
- * point with friction mu: the pyramid's k edges, inscribed in the cone (on
- * it) or circumscribed (its facets touching it, a facet centred on t2);
- * the normal alone without friction; the normal and two free shears when
- * joints cannot slide.  Returns the number of columns. */
-static int point_columns(double mu, const bl_cone *cone, int point, double nt[][3],
-                         bl_column_kind *kind)
+/* The columns at a contact point with friction mu: unit force directions
+ * (n, t2, t3 components) and, in the resultant model, a torsion couple
+ * (in units of mu_t times the normal force, about the normal): the
+ * pyramid's k edges (plus the adaptive cone's added ones), inscribed in the
+ * cone (on it) or circumscribed (its facets touching it, a facet centred on
+ * t2); in the resultant model each edge twice, with the couple +1 and -1;
+ * the normal alone without friction; the normal and free shears (and, in
+ * the resultant model, a free couple) when joints cannot slide.  Returns
+ * the number of columns. */
+static int point_columns(double mu, const bl_cone *cone, int point, int resultant, int first,
+                         double nt[][3], double *couple, bl_column_kind *kind)
 {
+    int n = 0;
     if (isinf(mu)) {
         double d[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        memcpy(nt, d, sizeof d);
-        kind[0] = BL_COL_NORMAL;
-        kind[1] = kind[2] = BL_COL_SHEAR;
-        return 3;
+        /* the resultant model's free shear and couple once per interface */
+        int shears = resultant && !first ? 0 : 2;
+        for (int i = 0; i <= shears; i++, n++) {
+            memcpy(nt[n], d[i], sizeof d[i]);
+            couple[n] = 0.0;
+            kind[n] = i ? BL_COL_SHEAR : BL_COL_NORMAL;
+        }
+        if (resultant && first) {
+            nt[n][0] = nt[n][1] = nt[n][2] = 0.0;
+            couple[n] = 1.0;
+            kind[n++] = BL_COL_SHEAR;
+        }
+        return n;
     }
     if (mu == 0.0) {
         nt[0][0] = 1, nt[0][1] = nt[0][2] = 0;
+        couple[0] = 0.0;
         kind[0] = BL_COL_NORMAL;
         return 1;
     }
@@ -34,12 +49,50 @@ static int point_columns(double mu, const bl_cone *cone, int point, double nt[][
     double shift = cone->circumscribed ? M_PI / k : 0.0;
     for (int e = 0; e < k + added; e++) {
         double th = e < k ? 2.0 * M_PI * e / k + shift : cone->extra[point * cone->nextra + e - k];
-        nt[e][0] = 1.0;
-        nt[e][1] = r * cos(th);
-        nt[e][2] = r * sin(th);
-        kind[e] = BL_COL_PYRAMID;
+        for (int rep = 0; rep < (resultant ? 2 : 1); rep++, n++) {
+            nt[n][0] = 1.0;
+            nt[n][1] = r * cos(th);
+            nt[n][2] = r * sin(th);
+            couple[n] = resultant ? (rep ? 1.0 : -1.0) : 0.0;
+            kind[n] = BL_COL_PYRAMID;
+        }
     }
-    return k + added;
+    return n;
+}
+
+/* The torsion lever of a convex contact polygon: the mean distance of its
+ * area from its centroid c, (1/A) integral |r - c| dA; times mu it is the
+ * torsion capacity per unit normal force of a uniform pressure sliding
+ * about c.  Exact, by polar integration over the triangles (c, u, v) of its
+ * edges: with h the distance from c to the edge's line and t the position
+ * along it over h, integral |r| dA = h^3 / 6 [G(t_v) - G(t_u)],
+ * G(t) = t sqrt(1 + t^2) + asinh t. */
+static double torsion_lever(const bl_interface *in, bl_vec3 *centroid)
+{
+    bl_vec3 c = {0, 0, 0};
+    double area = 0.0;
+    for (int i = 1; i + 1 < in->np; i++) {
+        bl_vec3 a = in->poly[0], b = in->poly[i], d = in->poly[i + 1];
+        double t = 0.5 * bl_v3_norm(bl_v3_cross(bl_v3_sub(b, a), bl_v3_sub(d, a)));
+        area += t;
+        c = bl_v3_add(c, bl_v3_scale(bl_v3_add(a, bl_v3_add(b, d)), t / 3.0));
+    }
+    c = bl_v3_scale(c, 1.0 / area);
+    *centroid = c;
+    double sum = 0.0;
+    for (int i = 0; i < in->np; i++) {
+        bl_vec3 u = bl_v3_sub(in->poly[i], c), v = bl_v3_sub(in->poly[(i + 1) % in->np], c);
+        bl_vec3 e = bl_v3_sub(v, u);
+        double len = bl_v3_norm(e);
+        if (!(len > 0.0)) continue;
+        e = bl_v3_scale(e, 1.0 / len);
+        double su = bl_v3_dot(u, e), sv = bl_v3_dot(v, e);
+        double h = bl_v3_norm(bl_v3_sub(u, bl_v3_scale(e, su)));
+        if (!(h > 0.0)) continue;
+        double tu = su / h, tv = sv / h;
+        sum += h * h * h / 6.0 * ((tv * sqrt(1 + tv * tv) + asinh(tv)) - (tu * sqrt(1 + tu * tu) + asinh(tu)));
+    }
+    return sum / area;
 }
 
 /* a x b, with the components below their own round-off set to zero (as in
@@ -79,8 +132,9 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
     s->L0 = lsum / nb;
     s->nrows = 6 * nfree;
 
-    double nt[128][3];
-    bl_column_kind kind[128];
+    double nt[256][3], couple[256];
+    bl_column_kind kind[256];
+    int resultant = m->interface_model == BL_RESULTANT;
     int nforce = 0, npoints = 0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
@@ -91,12 +145,12 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
             return NULL;
         }
         for (int q = 0; q < in->np; q++, npoints++)
-            nforce += point_columns(in->mu, cone, npoints, nt, kind);
+            nforce += point_columns(in->mu, cone, npoints, resultant, q == 0, nt, couple, kind);
     }
     s->nforce = nforce;
     s->ncols = nforce + 1;
     s->npoints = npoints;
-    size_t nc = (size_t)s->ncols, nnz_max = 12 * (size_t)nforce + (size_t)s->nrows;
+    size_t nc = (size_t)s->ncols, nnz_max = 12 * (size_t)nforce + (size_t)s->nrows + 6;
     s->colptr = malloc((nc + 1) * sizeof *s->colptr);
     s->rowind = malloc(nnz_max * sizeof *s->rowind);
     s->val = malloc(nnz_max * sizeof *s->val);
@@ -119,13 +173,25 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
     int c = 0, nz = 0, point = 0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
+        /* resultant model: shear at the polygon's centroid, torsion couples
+         * of mu_t per unit normal force (mu times the torsion lever unless
+         * the model sets mu_t) */
+        bl_vec3 cen = in->poly[0];
+        double mut = 0.0;
+        if (resultant) {
+            double lever = torsion_lever(in, &cen);
+            mut = m->mu_t > 0.0 ? m->mu_t : (isfinite(in->mu) ? in->mu : 0.0) * lever;
+        }
         for (int q = 0; q < in->np; q++, point++) {
-            int ncol = point_columns(in->mu, cone, point, nt, kind);
+            int ncol = point_columns(in->mu, cone, point, resultant, q == 0, nt, couple, kind);
             s->mu[point] = in->mu;
             for (int e = 0; e < ncol; e++, c++) {
-                bl_vec3 f = bl_v3_add(bl_v3_scale(in->n3, nt[e][0]),
-                                      bl_v3_add(bl_v3_scale(in->t2, nt[e][1]),
-                                                bl_v3_scale(in->t3, nt[e][2])));
+                bl_vec3 fn = bl_v3_scale(in->n3, nt[e][0]);
+                bl_vec3 ft = bl_v3_add(bl_v3_scale(in->t2, nt[e][1]), bl_v3_scale(in->t3, nt[e][2]));
+                bl_vec3 f = bl_v3_add(fn, ft);
+                /* a free couple (rigid joints) has no force; a pyramid edge's
+                 * couple is mu_t per unit of its normal force */
+                bl_vec3 tw = bl_v3_scale(in->n3, couple[e] * (kind[e] == BL_COL_SHEAR ? 1.0 : mut));
                 s->colptr[c] = nz;
                 s->lo[c] = kind[e] == BL_COL_SHEAR ? -INFINITY : 0.0;
                 s->hi[c] = INFINITY;
@@ -138,9 +204,14 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
                     int r = s->block_row[blk[side]];
                     if (r < 0) continue;
                     double sg = side ? 1.0 : -1.0;
-                    bl_vec3 arm = bl_v3_scale(bl_v3_sub(in->poly[q], m->blocks[blk[side]].centroid3),
-                                              1.0 / s->L0);
+                    bl_vec3 g = m->blocks[blk[side]].centroid3;
+                    bl_vec3 arm = bl_v3_scale(bl_v3_sub(in->poly[q], g), 1.0 / s->L0);
                     bl_vec3 mo = moment(arm, f);
+                    if (resultant) {
+                        bl_vec3 armc = bl_v3_scale(bl_v3_sub(cen, g), 1.0 / s->L0);
+                        mo = bl_v3_add(bl_v3_add(moment(arm, fn), moment(armc, ft)),
+                                       bl_v3_scale(tw, 1.0 / s->L0));
+                    }
                     double v[6] = {f.x, f.y, f.z, mo.x, mo.y, mo.z};
                     for (int i = 0; i < 6; i++)
                         if (v[i] != 0.0) {

@@ -283,12 +283,20 @@ static void push_triple(lua_State *L, bl_vec3 p)
 static int model_new(lua_State *L)
 {
     static const char *const fields[] = {"name", "dim", "mu", "cohesion", "density",
-                                         "thickness", "gravity", NULL};
+                                         "thickness", "gravity", "interface", "mu_t", NULL};
+    static const char *const interface_models[] = {"vertex", "resultant", NULL};
     check_fields(L, 1, "model", fields, 0);
     double dim = number_field(L, 1, "model", "dim", 2, POSITIVE);
     if (dim != 2 && dim != 3) fail(L, "model: field 'dim' must be 2 or 3, got %g", dim);
     if (dim == 3 && field_given(L, 1, "thickness"))
         fail(L, "model: field 'thickness' is for 2D models (a 3D block is solid)");
+    if (dim == 2 && (field_given(L, 1, "interface") || field_given(L, 1, "mu_t")))
+        fail(L, "model: fields 'interface' and 'mu_t' are for 3D models (in 2D the vertex and "
+                "resultant models are the same)");
+    int imodel = choice_field(L, 1, "model", "interface", interface_models, 0);
+    double mut = number_field(L, 1, "model", "mu_t", 0.0, POSITIVE);
+    if (field_given(L, 1, "mu_t") && imodel != BL_RESULTANT)
+        fail(L, "model: field 'mu_t' goes with interface = \"resultant\"");
     bl_vec3 g3 = bl_v3(0, 0, -1);
     if (dim == 3 && field(L, 1, "gravity")) {
         g3 = to_point3(L, "model", "field 'gravity'");
@@ -316,6 +324,8 @@ static int model_new(lua_State *L)
     if (!*p) return fail(L, "model: out of memory");
     bl_model *m = *p;
     m->dim = (int)dim;
+    m->interface_model = (bl_interface_model)imodel;
+    m->mu_t = mut;
     snprintf(m->name, sizeof m->name, "%s", name);
     m->mu = mu;
     m->cohesion = c;

@@ -68,9 +68,19 @@ typedef struct bl_point_load {
     bl_vec3 at3, force3, moment3; /* 3D: point, force, and a couple */
 } bl_point_load;
 
+/* How a 3D interface carries force (doc/theory.md 3.3). */
+typedef enum bl_interface_model {
+    BL_VERTEX,           /* a force in the friction pyramid at every vertex */
+    BL_RESULTANT         /* normal forces at the vertices, the shear resultant in
+                            the pyramid at the centroid, torsion |M1| <= mu_t N */
+} bl_interface_model;
+
 typedef struct bl_model {
     char name[64];
     int dim;             /* 2 or 3 */
+    bl_interface_model interface_model; /* 3D */
+    double mu_t;         /* 3D resultant model: torsion per unit normal force
+                            (a length); 0: mu times the joint's torsion lever */
     /* material defaults, applied to blocks and interfaces as they are made */
     double mu, cohesion, density, thickness;
     bl_vec2 gravity;     /* unit vector of the dead load (before tilt) */
