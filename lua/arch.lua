@@ -5,11 +5,14 @@
 -- The arch is symmetric about the vertical through the centre; voussoirs are
 -- quadrilaterals between consecutive radial joints; each end joint rests on
 -- a fixed springing block.  Returns the voussoir numbers and the springings.
+-- In a 3D model it is a barrel vault: the same arch in the x-z plane (centre
+-- {x, z}) swept along y over `length`, in `segments` rings of voussoirs
+-- (default 1), on two springings running its whole length.
 local report = require "blocklim.report"
 
 return function(M)
   local allowed = { n = true, radius = true, span = true, thickness = true, angle = true,
-                    centre = true, density = true }
+                    centre = true, density = true, length = true, segments = true }
   local function fail(msg) error("arch: " .. msg, 3) end
   local function positive(t, k)
     local v = t[k]
@@ -23,7 +26,7 @@ return function(M)
     if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
     for k in pairs(t) do
       if not allowed[k] then
-        fail(("unknown field '%s' (fields: angle, centre, density, n, radius, span, thickness)")
+        fail(("unknown field '%s' (fields: angle, centre, density, length, n, radius, segments, span, thickness)")
           :format(tostring(k)))
       end
     end
@@ -47,6 +50,33 @@ return function(M)
     end
     local th = positive(t, "thickness")
     if th >= 2 * R then fail("field 'thickness' must be less than the diameter of the centre line") end
+    local m = M.current()
+    local solid = m and m:dim() == 3
+    local length, segments = t.length, t.segments or 1
+    if solid then
+      length = positive(t, "length")
+      if math.type(segments) ~= "integer" or segments < 1 then
+        fail("field 'segments' must be a positive integer, got " .. tostring(segments))
+      end
+    elseif t.length ~= nil or t.segments ~= nil then
+      fail("fields 'length' and 'segments' are for barrel vaults in 3D models (model{ dim = 3 })")
+    end
+    -- a block from its outline in the plane of the arch: as it is in 2D,
+    -- swept along y in 3D (each voussoir in `segments` pieces, a springing
+    -- in one)
+    local function make(vertices, fields, pieces)
+      if not solid then
+        fields.vertices = vertices
+        return { M.block(fields) }
+      end
+      local made = {}
+      for k = 0, pieces - 1 do
+        made[#made + 1] = M.extrude { polygon = vertices, axis = "y", from = length * k / pieces,
+                                      to = length * (k + 1) / pieces, support = fields.support,
+                                      density = fields.density }
+      end
+      return made
+    end
     local c = t.centre or { 0, 0 }
     local ri, ro = R - th / 2, R + th / 2
     local function at(r, a) return { c[1] + r * math.cos(a), c[2] + r * math.sin(a) } end
@@ -54,8 +84,10 @@ return function(M)
     local blocks = {}
     for i = 0, n - 1 do
       local a, b = a0 - 2 * half * i / n, a0 - 2 * half * (i + 1) / n
-      blocks[#blocks + 1] = M.block { vertices = { at(ri, a), at(ro, a), at(ro, b), at(ri, b) },
-                                      density = t.density }
+      for _, id in ipairs(make({ at(ri, a), at(ro, a), at(ro, b), at(ri, b) }, { density = t.density },
+                               segments)) do
+        blocks[#blocks + 1] = id
+      end
     end
     -- Springings continue each end joint along the arch's tangent, away from it.
     local springs = {}
@@ -63,8 +95,8 @@ return function(M)
       local a, s = e[1], e[2]
       local tx, ty = -math.sin(a) * s * th, math.cos(a) * s * th
       local p, q = at(ri, a), at(ro, a)
-      springs[#springs + 1] = M.block { vertices = { p, q, { q[1] + tx, q[2] + ty },
-                                                     { p[1] + tx, p[2] + ty } }, support = true }
+      springs[#springs + 1] = make({ p, q, { q[1] + tx, q[2] + ty }, { p[1] + tx, p[2] + ty } },
+                                   { support = true }, 1)[1]
     end
     return report.blocks(blocks), report.blocks(springs)
   end

@@ -7,6 +7,10 @@
 --   axis ((x, y) for "z", (x, z) for "y", (y, z) for "x") and is swept
 --   from `from` to `to` along it.
 -- Both return the block number (block{ vertices, faces } underneath).
+-- dome{ radius = R, thickness = t, rings = m, segments = k, centre = {x, y, z},
+--   density }: a hemispherical dome of m rings of k voussoirs each (the
+--   top ring's voussoirs meet at the crown), radial joints, on a fixed base
+--   slab under z = centre z.  Returns the voussoir numbers and the base.
 return function(M)
   -- level: 3 blames the caller of box or extrude when they call fail
   -- themselves; their helpers pass 4
@@ -60,6 +64,53 @@ return function(M)
     local a, b = s[1] / 2, s[2] / 2
     return prism({ { -a, -b }, { a, -b }, { a, b }, { -a, b } },
                  function(u, w, z) return { at[1] + u, at[2] + w, z } end, at[3], at[3] + s[3], t)
+  end
+
+  function M.dome(t)
+    check("dome", t, { radius = true, thickness = true, rings = true, segments = true,
+                       centre = true, density = true })
+    local function positive(k)
+      if type(t[k]) ~= "number" or not (t[k] > 0) or t[k] == math.huge then
+        fail("dome", ("field '%s' must be a positive number, got %s"):format(k, tostring(t[k])))
+      end
+      return t[k]
+    end
+    local function count(k, least)
+      if math.type(t[k]) ~= "integer" or t[k] < least then
+        fail("dome", ("field '%s' must be an integer of at least %d, got %s"):format(k, least,
+             tostring(t[k])))
+      end
+      return t[k]
+    end
+    local R, th = positive("radius"), positive("thickness")
+    if th >= 2 * R then fail("dome", "field 'thickness' must be less than the diameter") end
+    local rings, k = count("rings", 1), count("segments", 3)
+    local c = t.centre and number_list("dome", t, "centre", 3) or { 0, 0, 0 }
+    local ri, ro = R - th / 2, R + th / 2
+    local function at(r, phi, theta)
+      return { c[1] + r * math.cos(phi) * math.cos(theta), c[2] + r * math.cos(phi) * math.sin(theta),
+               c[3] + r * math.sin(phi) }
+    end
+    local blocks = {}
+    for j = 0, rings - 1 do
+      local p0, p1 = math.pi / 2 * j / rings, math.pi / 2 * (j + 1) / rings
+      for i = 0, k - 1 do
+        local a, b = 2 * math.pi * i / k, 2 * math.pi * (i + 1) / k
+        local pts = {}
+        for _, r in ipairs { ri, ro } do
+          pts[#pts + 1], pts[#pts + 2] = at(r, p0, a), at(r, p0, b)
+          if j < rings - 1 then
+            pts[#pts + 1], pts[#pts + 2] = at(r, p1, a), at(r, p1, b)
+          else
+            pts[#pts + 1] = at(r, p1, a) -- the crown: one point per radius
+          end
+        end
+        blocks[#blocks + 1] = M.block { points = pts, density = t.density }
+      end
+    end
+    local base = M.box { size = { 2 * ro + 2 * th, 2 * ro + 2 * th, th }, at = { c[1], c[2], c[3] - th },
+                         support = true }
+    return blocks, base
   end
 
   function M.extrude(t)

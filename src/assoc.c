@@ -91,7 +91,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         /* the slip of every contact point (from the mechanism: the forces
          * sit on corners of the pyramid); the friction on b opposes it */
         double a = bl_lp_primal(lp)[sys->nforce], smax = 0.0;
-        if (fabs(a - prev) <= 1e-9 * fmax(1.0, fabs(a))) break;
+        if (fabs(a - prev) <= o->tolerance * fmax(1.0, fabs(a))) break;
         prev = a;
         bl_system_slip3(sys, m, bl_lp_dual(lp), slip);
         for (int q = 0; q < np; q++) smax = fmax(smax, hypot(slip[2 * q], slip[2 * q + 1]));
