@@ -80,8 +80,9 @@ void bl_system_forces3(const bl_system *s, const double *x, double *force);
 void bl_system_mechanism3(const bl_system *s, const bl_model *m, const double *y, double *u);
 
 /* 3D: the tangential relative velocity of every contact point (slip of b
- * on a, components along t2 and t3) from the row multipliers y, in the
- * scaled units of y. */
+ * on a, components along t2 and t3; in the resultant model the slip at the
+ * joint's centroid, where its friction acts) from the row multipliers y, in
+ * the scaled units of y. */
 void bl_system_slip3(const bl_system *s, const bl_model *m, const double *y, double *slip);
 
 /* For a BL_FRICTION_FIXED system: the bounds of every column when the

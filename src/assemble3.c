@@ -302,7 +302,11 @@ void bl_system_slip3(const bl_system *s, const bl_model *m, const double *y, dou
     int point = 0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
+        /* the resultant model's friction acts at the centroid: its slip there */
+        bl_vec3 cen = in->poly[0];
+        if (m->interface_model == BL_RESULTANT) torsion_lever(in, &cen);
         for (int q = 0; q < in->np; q++, point++) {
+            bl_vec3 at = m->interface_model == BL_RESULTANT ? cen : in->poly[q];
             /* velocity of each side at the point: v + w x (p - g) / L0 (the
              * moment rows were scaled by 1/L0) */
             bl_vec3 d = {0, 0, 0};
@@ -310,8 +314,7 @@ void bl_system_slip3(const bl_system *s, const bl_model *m, const double *y, dou
             for (int side = 0; side < 2; side++) {
                 int r = s->block_row[blk[side]];
                 if (r < 0) continue;
-                bl_vec3 arm = bl_v3_scale(bl_v3_sub(in->poly[q], m->blocks[blk[side]].centroid3),
-                                          1.0 / s->L0);
+                bl_vec3 arm = bl_v3_scale(bl_v3_sub(at, m->blocks[blk[side]].centroid3), 1.0 / s->L0);
                 bl_vec3 v = bl_v3_add(bl_v3(y[r], y[r + 1], y[r + 2]),
                                       bl_v3_cross(bl_v3(y[r + 3], y[r + 4], y[r + 5]), arm));
                 d = side ? bl_v3_add(d, v) : bl_v3_sub(d, v);
