@@ -10,10 +10,11 @@ struct bl_lp {
     void *impl;
 };
 
-bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows)
+bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows, int ncols)
 {
     if (asked != BL_LP_AUTO) return asked;
-    return nrows <= BL_LP_AUTO_ROWS ? BL_LP_SIMPLEX : BL_LP_IPM;
+    int wide = ncols > BL_LP_AUTO_COLS && ncols > 5 * nrows;
+    return nrows <= BL_LP_AUTO_ROWS && !wide ? BL_LP_SIMPLEX : BL_LP_IPM;
 }
 
 void bl_lp_settings_default(bl_lp_settings *s)
@@ -32,7 +33,7 @@ bl_lp *bl_lp_create(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *e
         bl_error_set(err, "lp: out of memory");
         return NULL;
     }
-    lp->engine = bl_lp_choose(s->engine, p->nrows) == BL_LP_IPM ? &bl_lp_ipm_engine
+    lp->engine = bl_lp_choose(s->engine, p->nrows, p->ncols) == BL_LP_IPM ? &bl_lp_ipm_engine
                                                                 : &bl_lp_clp_engine;
     lp->impl = lp->engine->create(p, s, err);
     if (!lp->impl) {

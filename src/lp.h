@@ -25,11 +25,15 @@ typedef enum bl_lp_engine_kind {
     BL_LP_IPM            /* interior point on CHOLMOD (lp_ipm.c) */
 } bl_lp_engine_kind;
 
-/* The engine "auto" means for an LP of nrows equality rows: the simplex up
- * to BL_LP_AUTO_ROWS rows (its answer is a vertex: one clean mechanism),
- * the interior point above (doc/performance.md has the measurements). */
+/* The engine "auto" means for an LP of nrows equality rows and ncols
+ * columns: the simplex up to BL_LP_AUTO_ROWS rows (its answer is a vertex:
+ * one clean mechanism) unless the columns outnumber BL_LP_AUTO_COLS and 5
+ * per row (3D pyramids: a dome of 576 rows and 11,747 columns took the
+ * simplex 49 s, the interior point 1.1 s), the interior point otherwise
+ * (doc/performance.md has the measurements). */
 #define BL_LP_AUTO_ROWS 600
-bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows);
+#define BL_LP_AUTO_COLS 2000
+bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows, int ncols);
 
 typedef struct bl_lp_settings {
     bl_lp_engine_kind engine;
