@@ -225,7 +225,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
 
     /* self weight (dead, along gravity) and the weight-proportional live
      * load at the centroids; point forces with their moments, and couples */
-    bl_vec3 g = m->gravity3, d = m->live_dir3;
+    bl_vec3 g = bl_model_gravity3(m), d = m->live_dir3;
     for (int i = 0; i < nb; i++) {
         int r = s->block_row[i];
         if (r < 0) continue;

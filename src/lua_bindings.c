@@ -547,9 +547,15 @@ static int load_3d(lua_State *L, bl_model *m)
     static const char *const point_fields[] = {"block", "at", "force", "moment", NULL};
     static const char *const dead_choices[] = {"self-weight", "none", NULL};
     static const char *const live_choices[] = {"horizontal", "none", NULL};
-    if (field_given(L, 2, "tilt"))
-        return fail(L, "load: field 'tilt' is not built for 3D models yet; turn gravity with "
-                       "model{ dim = 3, gravity = {x, y, z} }");
+    double tilt = number_field(L, 2, "load", "tilt", NAN, ANY);
+    if (!isnan(tilt) && !(fabs(tilt) < 90))
+        return fail(L, "load: field 'tilt' must be an angle in degrees between -90 and 90");
+    bl_vec2 axis = m->tilt_axis;
+    if (point_field(L, 2, "load", "axis", &axis)) {
+        if (isnan(tilt)) return fail(L, "load: field 'axis' goes with 'tilt'");
+        if (bl_v2_norm(axis) == 0)
+            return fail(L, "load: field 'axis' must be a non-zero horizontal direction {x, y}");
+    }
     int kinds[2] = {-1, -1};
     bl_point_load pl[2] = {{0}, {0}};
     for (int k = 0; k < 2; k++) {
@@ -607,12 +613,16 @@ static int load_3d(lua_State *L, bl_model *m)
         m->live_weight = 1;
         m->live_dir3 = bl_v3_scale(dir, 1.0 / bl_v3_norm(dir));
     }
+    if (!isnan(tilt)) {
+        m->tilt = tilt * M_PI / 180.0;
+        m->tilt_axis = axis;
+    }
     return 0;
 }
 
 static int model_load(lua_State *L)
 {
-    static const char *const fields[] = {"dead", "live", "direction", "tilt", NULL};
+    static const char *const fields[] = {"dead", "live", "direction", "tilt", "axis", NULL};
     static const char *const point_fields[] = {"block", "at", "force", NULL};
     static const char *const dead_choices[] = {"self-weight", "none", NULL};
     static const char *const live_choices[] = {"horizontal", "none", NULL};
@@ -661,6 +671,7 @@ static int model_load(lua_State *L)
     double tilt = number_field(L, 2, "load", "tilt", NAN, ANY);
     if (!isnan(tilt) && !(fabs(tilt) < 90))
         return fail(L, "load: field 'tilt' must be an angle in degrees between -90 and 90");
+    if (field_given(L, 2, "axis")) return fail(L, "load: field 'axis' is for 3D models");
 
     bl_error err;
     for (int k = 0; k < 2; k++)

@@ -19,6 +19,7 @@ bl_model *bl_model_new(void)
     m->dim = 2;
     m->gravity3 = bl_v3(0.0, 0.0, -1.0);
     m->live_dir3 = bl_v3(1.0, 0.0, 0.0);
+    m->tilt_axis = bl_v2(0.0, -1.0);
     return m;
 }
 
@@ -241,6 +242,16 @@ bl_vec2 bl_model_gravity(const bl_model *m)
 {
     double c = cos(m->tilt), s = sin(m->tilt);
     return bl_v2(c * m->gravity.x - s * m->gravity.y, s * m->gravity.x + c * m->gravity.y);
+}
+
+bl_vec3 bl_model_gravity3(const bl_model *m)
+{
+    /* Rodrigues: gravity turned by tilt about the unit horizontal axis k */
+    double n = bl_v2_norm(m->tilt_axis);
+    bl_vec3 k = bl_v3(m->tilt_axis.x / n, m->tilt_axis.y / n, 0.0), g = m->gravity3;
+    double c = cos(m->tilt), s = sin(m->tilt);
+    return bl_v3_add(bl_v3_add(bl_v3_scale(g, c), bl_v3_scale(bl_v3_cross(k, g), s)),
+                     bl_v3_scale(k, bl_v3_dot(k, g) * (1.0 - c)));
 }
 
 int bl_model_free_blocks(const bl_model *m)

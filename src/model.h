@@ -100,7 +100,9 @@ typedef struct bl_model {
     int self_weight;     /* dead load: self weight along gravity */
     int live_weight;     /* live load: weight along live_dir */
     bl_vec2 live_dir;    /* unit */
-    bl_vec3 gravity3;    /* 3D: unit vector of the dead load, (0, 0, -1) by default */
+    bl_vec3 gravity3;    /* 3D: unit vector of the dead load (before tilt), (0, 0, -1) */
+    bl_vec2 tilt_axis;   /* 3D: the horizontal axis gravity turns about by tilt,
+                            (0, -1) by default (as in 2D, seen in the x-z plane) */
     bl_vec3 live_dir3;   /* 3D: unit vector of the live load, (1, 0, 0) by default */
     int nloads, cap_loads;
     bl_point_load *loads;
@@ -142,6 +144,7 @@ void bl_model_clear_interfaces(bl_model *m);
 double bl_model_size(const bl_model *m);
 /* Current direction of the dead load (gravity turned by tilt). */
 bl_vec2 bl_model_gravity(const bl_model *m);
+bl_vec3 bl_model_gravity3(const bl_model *m);
 int bl_model_free_blocks(const bl_model *m);
 
 #endif

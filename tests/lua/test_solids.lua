@@ -90,7 +90,6 @@ T.raises(function() block { vertices = cube, faces = { { 1, 2, 3 }, { 1, 2, 9 } 
 T.raises(function() block { vertices = cube, faces = faces, thickness = 1 } end,
          "thickness is refused in 3D", "block", "'thickness'")
 T.eq(count(), 6, "after the errors the model has the blocks it had")
-T.raises(function() load { tilt = 10 } end, "3D: tilt is refused for now", "load", "tilt", "3D")
 
 -- Interface detection: coplanar opposite faces and their overlap.
 local function areas()
@@ -315,6 +314,21 @@ end
 load { live = "horizontal", direction = rotate({ 1 / math.sqrt(2), 1 / math.sqrt(2), 0 }, axis, angle) }
 T.near(solve { cone = { facets = 4, kind = "adaptive" } }.alpha, 0.3, 1e-9,
        "the diagonal slide turned about (2, -1, 0.5), adaptive cone: still alpha = mu")
+
+-- tilting: gravity turned by theta about a horizontal axis; a box that
+-- rocks at alpha_h = b/h under a horizontal load then needs
+-- alpha' = alpha_h cos(theta) - sin(theta) more along the tilt (as in 2D)
+for _, deg in ipairs { 10, 20 } do
+  for _, case in ipairs { { { 0, -1 }, { 1, 0 } }, { { 1, 0 }, { 0, 1 } } } do
+    model { dim = 3, mu = 0.6 }
+    box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+    box { size = { 0.5, 0.5, 1 } }
+    load { tilt = deg, axis = case[1], live = "horizontal", direction = case[2] }
+    local th = math.rad(deg)
+    T.near(solve {}.alpha, 0.5 * math.cos(th) - math.sin(th), 1e-7,
+           ("tilt %d degrees about {%d, %d}: alpha = (b/h) cos - sin"):format(deg, case[1][1], case[1][2]))
+  end
+end
 
 -- the resultant interface model: torsion mu_t N, by default mu times the
 -- joint's mean distance from its centroid, (sqrt 2 + ln(1 + sqrt 2)) / 6 a
