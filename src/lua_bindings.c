@@ -175,14 +175,6 @@ static bl_vec3 to_point3(lua_State *L, const char *fn, const char *what)
     return bl_v3(c[0], c[1], c[2]);
 }
 
-/* In a 3D model, what is not built yet is refused with one sentence. */
-static void refuse_3d(lua_State *L, const bl_model *m, const char *fn)
-{
-    if (m->dim == 3)
-        fail(L, "%s: not available in 3D models yet (3D blocks can be built and inspected: "
-                "block, box, extrude, contacts, stats, block_info, interface_info)", fn);
-}
-
 static int point_field(lua_State *L, int idx, const char *fn, const char *f, bl_vec2 *out)
 {
     if (!field(L, idx, f)) return 0;
@@ -493,8 +485,10 @@ static int model_interface(lua_State *L)
 {
     static const char *const fields[] = {"mu", "cohesion", "points", NULL};
     bl_model *m = check_model(L, 1);
-    refuse_3d(L, m, "interface");
     check_fields(L, 2, "interface", fields, 2);
+    if (m->dim == 3 && (field_given(L, 2, "points") || field_given(L, 2, "cohesion")))
+        return fail(L, "interface: in 3D models only 'mu' can be changed so far (joints by "
+                       "hand and cohesion are 2D)");
     bl_joint_spec s = {0};
     lua_geti(L, 2, 1);
     s.a = block_index(L, m, -1, "interface", "entry 1");

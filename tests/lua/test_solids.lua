@@ -330,6 +330,14 @@ for _, deg in ipairs { 10, 20 } do
   end
 end
 
+-- interface{ a, b, mu = ... } in 3D: the box now slides at the new mu
+model { dim = 3, mu = 0.6 }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 1 } }
+interface { 1, 2, mu = 0.3 }
+T.near(solve {}.alpha, 0.3, 1e-9, "3D interface{ mu = 0.3 }: a cube now slides at 0.3")
+T.raises(function() interface { 1, 2, cohesion = 1 } end, "3D interface{ cohesion } is refused", "interface", "2D")
+
 -- the resultant interface model: torsion mu_t N, by default mu times the
 -- joint's mean distance from its centroid, (sqrt 2 + ln(1 + sqrt 2)) / 6 a
 -- for a square of side a: the vertex model's a / sqrt 2 is 1.848 times it
