@@ -24,6 +24,85 @@ void bl_system_free(bl_system *s)
     free(s);
 }
 
+/* ---- for the builders (2D here, 3D in assemble3.c) -------------------- */
+
+bl_system *bl_system_start(const bl_model *m, int per_block, bl_error *err)
+{
+    bl_system *s = calloc(1, sizeof *s);
+    int nb = m->nblocks, nfree = 0;
+    double wsum = 0.0, lsum = 0.0;
+    if (s) s->block_row = malloc((size_t)(nb ? nb : 1) * sizeof *s->block_row);
+    if (!s || !s->block_row) {
+        bl_system_free(s);
+        bl_error_set(err, "solve: out of memory assembling the equilibrium system");
+        return NULL;
+    }
+    s->dim = m->dim;
+    for (int i = 0; i < nb; i++) {
+        const bl_block *b = &m->blocks[i];
+        s->block_row[i] = b->support ? -1 : per_block * nfree++;
+        if (!b->support) wsum += b->weight;
+        lsum += m->dim == 3 ? cbrt(b->volume) : sqrt(b->area);
+    }
+    if (nfree == 0) {
+        bl_system_free(s);
+        bl_error_set(err, "solve: the model has no free block");
+        return NULL;
+    }
+    s->W0 = wsum / nfree;
+    s->L0 = lsum / nb;
+    s->nrows = per_block * nfree;
+    return s;
+}
+
+int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max)
+{
+    s->nforce = nforce;
+    s->ncols = nforce + 1;
+    s->npoints = npoints;
+    size_t nc = (size_t)s->ncols;
+    s->colptr = malloc((nc + 1) * sizeof *s->colptr);
+    s->rowind = malloc(nnz_max * sizeof *s->rowind);
+    s->val = malloc(nnz_max * sizeof *s->val);
+    s->lo = malloc(nc * sizeof *s->lo);
+    s->hi = malloc(nc * sizeof *s->hi);
+    s->obj = calloc(nc, sizeof *s->obj);
+    s->rhs = calloc((size_t)s->nrows, sizeof *s->rhs);
+    s->col_point = malloc(nc * sizeof *s->col_point);
+    s->col_kind = malloc(nc * sizeof *s->col_kind);
+    s->col_nt = calloc((size_t)s->dim * nc, sizeof *s->col_nt);
+    s->cohesion = calloc((size_t)npoints + 1, sizeof *s->cohesion);
+    s->mu = calloc((size_t)npoints + 1, sizeof *s->mu);
+    return s->cohesion && s->mu && s->colptr && s->rowind && s->val && s->lo && s->hi && s->obj &&
+                   s->rhs && s->col_point && s->col_kind && s->col_nt
+               ? 0
+               : -1;
+}
+
+bl_system *bl_system_finish(bl_system *s, int nz, const double *fL, bl_error *err)
+{
+    int c = s->nforce;
+    s->colptr[c] = nz;
+    s->lo[c] = -INFINITY;
+    s->hi[c] = INFINITY;
+    s->obj[c] = 1.0;
+    s->col_point[c] = -1;
+    s->col_kind[c] = -1;
+    for (int r = 0; r < s->nrows; r++)
+        if (fL[r] != 0.0) {
+            s->rowind[nz] = r;
+            s->val[nz++] = fL[r];
+        }
+    s->colptr[c + 1] = nz;
+    if (nz == s->colptr[c]) {
+        bl_system_free(s);
+        bl_error_set(err, "solve: the model has no live load; set one with "
+                          "load{ live = \"horizontal\" } or a live point load");
+        return NULL;
+    }
+    return s;
+}
+
 /* Columns at one contact point of interface k. */
 static int point_columns(const bl_interface *k, double C, bl_friction_form form,
                          bl_column_kind kind[3])
@@ -59,58 +138,22 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
                           "(flow = \"associative\")");
         return NULL;
     }
-    bl_system *s = calloc(1, sizeof *s);
-    if (!s) goto oom;
-    s->dim = 2;
+    bl_system *s = bl_system_start(m, 3, err);
+    if (!s) return NULL;
     s->form = form;
-    int nb = m->nblocks, nfree = 0;
-    double wsum = 0.0, lsum = 0.0;
-    s->block_row = malloc((size_t)(nb ? nb : 1) * sizeof *s->block_row);
-    if (!s->block_row) goto oom;
-    for (int i = 0; i < nb; i++) {
-        const bl_block *b = &m->blocks[i];
-        s->block_row[i] = b->support ? -1 : 3 * nfree++;
-        if (!b->support) wsum += b->weight;
-        lsum += sqrt(b->area);
-    }
-    if (nfree == 0) {
-        bl_system_free(s);
-        bl_error_set(err, "solve: the model has no free block");
-        return NULL;
-    }
-    s->W0 = wsum / nfree;
-    s->L0 = lsum / nb;
-    s->nrows = 3 * nfree;
-
     int nforce = 0;
     bl_column_kind kind[3];
     for (int k = 0; k < m->ninterfaces; k++)
         nforce += 2 * point_columns(&m->interfaces[k], cohesion_share(m, &m->interfaces[k]), form,
                                     kind);
-    s->nforce = nforce;
-    s->ncols = nforce + 1;
-    size_t nc = (size_t)s->ncols, nnz_max = 6 * (size_t)nforce + (size_t)s->nrows;
-    s->colptr = malloc((nc + 1) * sizeof *s->colptr);
-    s->rowind = malloc(nnz_max * sizeof *s->rowind);
-    s->val = malloc(nnz_max * sizeof *s->val);
-    s->lo = malloc(nc * sizeof *s->lo);
-    s->hi = malloc(nc * sizeof *s->hi);
-    s->obj = calloc(nc, sizeof *s->obj);
-    s->rhs = calloc((size_t)s->nrows, sizeof *s->rhs);
-    s->col_point = malloc(nc * sizeof *s->col_point);
-    s->col_kind = malloc(nc * sizeof *s->col_kind);
-    s->col_nt = malloc(2 * nc * sizeof *s->col_nt);
     double *fL = calloc((size_t)s->nrows, sizeof *fL);
-    s->npoints = 2 * m->ninterfaces;
-    s->cohesion = calloc((size_t)s->npoints + 1, sizeof *s->cohesion);
-    s->mu = calloc((size_t)s->npoints + 1, sizeof *s->mu);
-    if (!s->cohesion || !s->mu || !s->colptr || !s->rowind || !s->val || !s->lo || !s->hi || !s->obj || !s->rhs ||
-        !s->col_point || !s->col_kind || !s->col_nt || !fL) {
+    if (!fL || bl_system_allocate(s, nforce, 2 * m->ninterfaces,
+                                  6 * (size_t)nforce + (size_t)s->nrows)) {
         free(fL);
         goto oom;
     }
 
-    int c = 0, nz = 0;
+    int nb = m->nblocks, c = 0, nz = 0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
         double C = cohesion_share(m, in) / s->W0;
@@ -191,26 +234,8 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
         dst[r + 1] += sg * f.y;
         dst[r + 2] += sg * bl_v2_cross(arm, f);
     }
-    s->colptr[c] = nz;
-    s->lo[c] = -INFINITY;
-    s->hi[c] = INFINITY;
-    s->obj[c] = 1.0;
-    s->col_point[c] = -1;
-    s->col_kind[c] = -1;
-    s->col_nt[2 * c] = s->col_nt[2 * c + 1] = 0.0;
-    for (int r = 0; r < s->nrows; r++)
-        if (fL[r] != 0.0) {
-            s->rowind[nz] = r;
-            s->val[nz++] = fL[r];
-        }
-    s->colptr[c + 1] = nz;
+    s = bl_system_finish(s, nz, fL, err);
     free(fL);
-    if (nz == s->colptr[c]) {
-        bl_system_free(s);
-        bl_error_set(err, "solve: the model has no live load; set one with "
-                          "load{ live = \"horizontal\" } or a live point load");
-        return NULL;
-    }
     return s;
 oom:
     bl_system_free(s);

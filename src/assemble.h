@@ -12,6 +12,8 @@
 #ifndef BL_ASSEMBLE_H
 #define BL_ASSEMBLE_H
 
+#include <stddef.h>
+
 #include "model.h"
 
 /* What one force column is, in the interface frame (normal, tangent). */
@@ -90,6 +92,17 @@ void bl_system_slip3(const bl_system *s, const bl_model *m, const double *y, dou
  * R = mu n + C on the shear columns.  lo and hi have ncols entries. */
 void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, double *hi);
 void bl_system_free(bl_system *s);
+
+/* For the builders (2D in assemble.c, 3D in assemble3.c): a system with
+ * per_block rows per free block, its block rows and scales W0, L0 (NULL
+ * with err set when out of memory or without a free block); room for
+ * nforce force columns and alpha, npoints contact points and nnz_max
+ * entries (0, or -1 when out of memory); and the alpha column from the
+ * live load fL, the columns before it filled up to entry nz (NULL with err
+ * set, the system freed, when there is no live load). */
+bl_system *bl_system_start(const bl_model *m, int per_block, bl_error *err);
+int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max);
+bl_system *bl_system_finish(bl_system *s, int nz, const double *fL, bl_error *err);
 
 /* Physical contact forces (n0, t0, n1, t1 per interface) from x. */
 void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, double *force);

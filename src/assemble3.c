@@ -109,29 +109,9 @@ static bl_vec3 moment(bl_vec3 a, bl_vec3 b)
 
 bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *err)
 {
-    bl_system *s = calloc(1, sizeof *s);
-    if (!s) goto oom;
-    s->dim = 3;
+    bl_system *s = bl_system_start(m, 6, err);
+    if (!s) return NULL;
     s->form = BL_FRICTION_CONE;
-    int nb = m->nblocks, nfree = 0;
-    double wsum = 0.0, lsum = 0.0;
-    s->block_row = malloc((size_t)(nb ? nb : 1) * sizeof *s->block_row);
-    if (!s->block_row) goto oom;
-    for (int i = 0; i < nb; i++) {
-        const bl_block *b = &m->blocks[i];
-        s->block_row[i] = b->support ? -1 : 6 * nfree++;
-        if (!b->support) wsum += b->weight;
-        lsum += cbrt(b->volume);
-    }
-    if (nfree == 0) {
-        bl_system_free(s);
-        bl_error_set(err, "solve: the model has no free block");
-        return NULL;
-    }
-    s->W0 = wsum / nfree;
-    s->L0 = lsum / nb;
-    s->nrows = 6 * nfree;
-
     double nt[256][3], couple[256];
     bl_column_kind kind[256];
     int resultant = m->interface_model == BL_RESULTANT;
@@ -147,30 +127,13 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
         for (int q = 0; q < in->np; q++, npoints++)
             nforce += point_columns(in->mu, cone, npoints, resultant, q == 0, nt, couple, kind);
     }
-    s->nforce = nforce;
-    s->ncols = nforce + 1;
-    s->npoints = npoints;
-    size_t nc = (size_t)s->ncols, nnz_max = 12 * (size_t)nforce + (size_t)s->nrows + 6;
-    s->colptr = malloc((nc + 1) * sizeof *s->colptr);
-    s->rowind = malloc(nnz_max * sizeof *s->rowind);
-    s->val = malloc(nnz_max * sizeof *s->val);
-    s->lo = malloc(nc * sizeof *s->lo);
-    s->hi = malloc(nc * sizeof *s->hi);
-    s->obj = calloc(nc, sizeof *s->obj);
-    s->rhs = calloc((size_t)s->nrows, sizeof *s->rhs);
-    s->col_point = malloc(nc * sizeof *s->col_point);
-    s->col_kind = malloc(nc * sizeof *s->col_kind);
-    s->col_nt = malloc(3 * nc * sizeof *s->col_nt);
-    s->cohesion = calloc((size_t)npoints + 1, sizeof *s->cohesion);
-    s->mu = calloc((size_t)npoints + 1, sizeof *s->mu);
     double *fL = calloc((size_t)s->nrows, sizeof *fL);
-    if (!s->cohesion || !s->mu || !s->colptr || !s->rowind || !s->val || !s->lo || !s->hi ||
-        !s->obj || !s->rhs || !s->col_point || !s->col_kind || !s->col_nt || !fL) {
+    if (!fL || bl_system_allocate(s, nforce, npoints, 12 * (size_t)nforce + (size_t)s->nrows + 6)) {
         free(fL);
         goto oom;
     }
 
-    int c = 0, nz = 0, point = 0;
+    int nb = m->nblocks, c = 0, nz = 0, point = 0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
         /* resultant model: shear at the polygon's centroid, torsion couples
@@ -252,26 +215,8 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
         double *dst = pl->live ? fL : s->rhs, sg = pl->live ? 1.0 : -1.0;
         for (int i = 0; i < 6; i++) dst[r + i] += sg * v[i];
     }
-    s->colptr[c] = nz;
-    s->lo[c] = -INFINITY;
-    s->hi[c] = INFINITY;
-    s->obj[c] = 1.0;
-    s->col_point[c] = -1;
-    s->col_kind[c] = -1;
-    s->col_nt[3 * c] = s->col_nt[3 * c + 1] = s->col_nt[3 * c + 2] = 0.0;
-    for (int r = 0; r < s->nrows; r++)
-        if (fL[r] != 0.0) {
-            s->rowind[nz] = r;
-            s->val[nz++] = fL[r];
-        }
-    s->colptr[c + 1] = nz;
+    s = bl_system_finish(s, nz, fL, err);
     free(fL);
-    if (nz == s->colptr[c]) {
-        bl_system_free(s);
-        bl_error_set(err, "solve: the model has no live load; set one with "
-                          "load{ live = \"horizontal\" } or a live point load");
-        return NULL;
-    }
     return s;
 oom:
     bl_system_free(s);

@@ -807,7 +807,6 @@ static int model_block_info(lua_State *L)
 
 
 static void push_details(lua_State *L, const bl_solution *s);
-static void push_details3(lua_State *L, const bl_solution *s);
 
 /* Builds the result table of doc/guide.md from s (on the stack at sidx). */
 static void push_result(lua_State *L, const bl_solution *s, int sidx)
@@ -900,8 +899,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     }
     lua_setfield(L, -2, "residuals");
 
-    if (m->dim == 3) push_details3(L, s);
-    else push_details(L, s);
+    push_details(L, s);
     lua_setfield(L, -3, "interfaces");
     lua_setfield(L, -2, "mechanism");
     int count[4] = {0};
@@ -914,66 +912,25 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     lua_setfield(L, -2, "states");
 }
 
-/* Pushes a result's mechanism (per block) and interfaces tables. */
+/* Pushes a result's mechanism (per block: vx, vy, omega in 2D; vx, vy, vz,
+ * wx, wy, wz in 3D) and interfaces tables: blocks, state, geometry, and
+ * the forces (2D: n and t at both ends, a hinge; 3D: the contact polygon,
+ * its normal and frame, the force (n, t2, t3) at every vertex) with their
+ * sums N and T (3D: the shear's magnitude). */
 static void push_details(lua_State *L, const bl_solution *s)
 {
     const bl_model *m = s->model;
+    int nu = m->dim == 3 ? 6 : 3;
     lua_createtable(L, m->nblocks, 0);
     for (int i = 0; i < m->nblocks; i++) {
-        lua_createtable(L, 3, 0);
-        for (int c = 0; c < 3; c++) {
-            lua_pushnumber(L, s->u[3 * i + c]);
+        lua_createtable(L, nu, 0);
+        for (int c = 0; c < nu; c++) {
+            lua_pushnumber(L, s->u[nu * i + c]);
             lua_rawseti(L, -2, c + 1);
         }
         lua_rawseti(L, -2, i + 1);
     }
 
-    lua_createtable(L, m->ninterfaces, 0);
-    for (int k = 0; k < m->ninterfaces; k++) {
-        const bl_interface *in = &m->interfaces[k];
-        const double *f = s->force + 4 * k;
-        lua_createtable(L, 0, 10);
-        set_integer(L, "a", in->a + 1);
-        set_integer(L, "b", in->b + 1);
-        set_string(L, "state", bl_state_name(s->state[k]));
-        lua_createtable(L, 2, 0);
-        push_point(L, in->p[0]);
-        lua_rawseti(L, -2, 1);
-        push_point(L, in->p[1]);
-        lua_rawseti(L, -2, 2);
-        lua_setfield(L, -2, "points");
-        push_point(L, in->normal);
-        lua_setfield(L, -2, "normal");
-        if (s->hinge[k] >= 0) {
-            push_point(L, in->p[s->hinge[k]]);
-            lua_setfield(L, -2, "hinge");
-        }
-        push_pair(L, f[0], f[2]);
-        lua_setfield(L, -2, "n");
-        push_pair(L, f[1], f[3]);
-        lua_setfield(L, -2, "t");
-        set_number(L, "N", f[0] + f[2]);
-        set_number(L, "T", f[1] + f[3]);
-        set_number(L, "mu", in->mu);
-        lua_rawseti(L, -2, k + 1);
-    }
-}
-
-/* 3D: the mechanism (vx, vy, vz, wx, wy, wz per block) and the interfaces:
- * blocks, state, contact polygon, normal and frame, and the force (n, t2,
- * t3) at every vertex with their sums N and T (the shear's magnitude). */
-static void push_details3(lua_State *L, const bl_solution *s)
-{
-    const bl_model *m = s->model;
-    lua_createtable(L, m->nblocks, 0);
-    for (int i = 0; i < m->nblocks; i++) {
-        lua_createtable(L, 6, 0);
-        for (int c = 0; c < 6; c++) {
-            lua_pushnumber(L, s->u[6 * i + c]);
-            lua_rawseti(L, -2, c + 1);
-        }
-        lua_rawseti(L, -2, i + 1);
-    }
     lua_createtable(L, m->ninterfaces, 0);
     const double *f = s->force;
     for (int k = 0; k < m->ninterfaces; k++) {
@@ -982,29 +939,51 @@ static void push_details3(lua_State *L, const bl_solution *s)
         set_integer(L, "a", in->a + 1);
         set_integer(L, "b", in->b + 1);
         set_string(L, "state", bl_state_name(s->state[k]));
-        lua_createtable(L, in->np, 0);
-        for (int e = 0; e < in->np; e++) {
-            push_triple(L, in->poly[e]);
-            lua_rawseti(L, -2, e + 1);
-        }
-        lua_setfield(L, -2, "points");
-        push_triple(L, in->n3);
-        lua_setfield(L, -2, "normal");
-        push_triple(L, in->t2);
-        lua_setfield(L, -2, "t2");
-        double N = 0.0, T2 = 0.0, T3 = 0.0;
-        lua_createtable(L, in->np, 0);
-        for (int e = 0; e < in->np; e++, f += 3) {
-            push_triple(L, bl_v3(f[0], f[1], f[2]));
-            lua_rawseti(L, -2, e + 1);
-            N += f[0];
-            T2 += f[1];
-            T3 += f[2];
-        }
-        lua_setfield(L, -2, "forces");
-        set_number(L, "N", N);
-        set_number(L, "T", hypot(T2, T3));
         set_number(L, "mu", in->mu);
+        if (m->dim == 3) {
+            lua_createtable(L, in->np, 0);
+            for (int e = 0; e < in->np; e++) {
+                push_triple(L, in->poly[e]);
+                lua_rawseti(L, -2, e + 1);
+            }
+            lua_setfield(L, -2, "points");
+            push_triple(L, in->n3);
+            lua_setfield(L, -2, "normal");
+            push_triple(L, in->t2);
+            lua_setfield(L, -2, "t2");
+            double N = 0.0, T2 = 0.0, T3 = 0.0;
+            lua_createtable(L, in->np, 0);
+            for (int e = 0; e < in->np; e++, f += 3) {
+                push_triple(L, bl_v3(f[0], f[1], f[2]));
+                lua_rawseti(L, -2, e + 1);
+                N += f[0];
+                T2 += f[1];
+                T3 += f[2];
+            }
+            lua_setfield(L, -2, "forces");
+            set_number(L, "N", N);
+            set_number(L, "T", hypot(T2, T3));
+        } else {
+            lua_createtable(L, 2, 0);
+            push_point(L, in->p[0]);
+            lua_rawseti(L, -2, 1);
+            push_point(L, in->p[1]);
+            lua_rawseti(L, -2, 2);
+            lua_setfield(L, -2, "points");
+            push_point(L, in->normal);
+            lua_setfield(L, -2, "normal");
+            if (s->hinge[k] >= 0) {
+                push_point(L, in->p[s->hinge[k]]);
+                lua_setfield(L, -2, "hinge");
+            }
+            push_pair(L, f[0], f[2]);
+            lua_setfield(L, -2, "n");
+            push_pair(L, f[1], f[3]);
+            lua_setfield(L, -2, "t");
+            set_number(L, "N", f[0] + f[2]);
+            set_number(L, "T", f[1] + f[3]);
+            f += 4;
+        }
         lua_rawseti(L, -2, k + 1);
     }
 }
