@@ -11,6 +11,12 @@
 --   density }: a hemispherical dome of m rings of k voussoirs each (the
 --   top ring's voussoirs meet at the crown), radial joints, on a fixed base
 --   slab under z = centre z.  Returns the voussoir numbers and the base.
+-- facade{ length = n, returns = m, courses = c, unit = {L, H}, density }:
+--   a facade of n blocks L long along x, half a block (L/2) thick along y,
+--   with return walls at both ends running m blocks along +y, interlocked in
+--   alternate courses (the facade runs through the corners in the first,
+--   the returns in the next), c courses H high, on a fixed base slab.
+--   Returns the block numbers and the base.
 return function(M)
   -- level: 3 blames the caller of box or extrude when they call fail
   -- themselves; their helpers pass 4
@@ -110,6 +116,40 @@ return function(M)
     end
     local base = M.box { size = { 2 * ro + 2 * th, 2 * ro + 2 * th, th }, at = { c[1], c[2], c[3] - th },
                          support = true }
+    return blocks, base
+  end
+
+  function M.facade(t)
+    check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true })
+    local function count(k)
+      if math.type(t[k]) ~= "integer" or t[k] < 1 then
+        fail("facade", ("field '%s' must be a positive integer, got %s"):format(k, tostring(t[k])))
+      end
+      return t[k]
+    end
+    local n, m, courses = count("length"), count("returns"), count("courses")
+    if n < 2 then fail("facade", "field 'length' must be at least 2 blocks") end
+    local u = number_list("facade", t, "unit", 2, true)
+    local L, H, th = u[1], u[2], u[1] / 2
+    local W, D = n * L, th + m * L
+    local blocks, rho = {}, t.density
+    local function put(size, at) blocks[#blocks + 1] = M.box { size = size, at = at, density = rho } end
+    for c = 0, courses - 1 do
+      local z = c * H
+      if c % 2 == 0 then -- the facade runs through the corners
+        for k = 0, n - 1 do put({ L, th, H }, { (k + 0.5) * L, th / 2, z }) end
+        for _, x in ipairs { th / 2, W - th / 2 } do
+          for k = 0, m - 1 do put({ th, L, H }, { x, th + (k + 0.5) * L, z }) end
+        end
+      else -- the returns run through the corners
+        for _, x in ipairs { th / 2, W - th / 2 } do
+          for k = 0, m - 1 do put({ th, L, H }, { x, (k + 0.5) * L, z }) end
+          put({ th, th, H }, { x, m * L + th / 2, z })
+        end
+        for k = 0, n - 2 do put({ L, th, H }, { th + (k + 0.5) * L, th / 2, z }) end
+      end
+    end
+    local base = M.box { size = { W + 2 * th, D + 2 * th, H }, at = { W / 2, D / 2, -H }, support = true }
     return blocks, base
   end
 

@@ -4,25 +4,9 @@
 -- the facade with return walls of models/facade.lua, loaded out of plane,
 -- and a dome of 4 rings of 12 voussoirs (radius 2, thickness 0.2), loaded
 -- along x.  Run from the top directory: build/blocklim scripts/accuracy.lua
-local function facade(interface)
-  local L, t, H, W, D = 0.4, 0.2, 0.2, 3.2, 1.4
+local function facade_model(interface)
   model { name = "facade", dim = 3, mu = 0.65, interface = interface }
-  box { size = { W + 0.4, D + 0.4, 0.2 }, at = { W / 2, D / 2, -0.2 }, support = true }
-  for c = 0, 7 do
-    local z = c * H
-    if c % 2 == 0 then
-      for k = 0, 7 do box { size = { L, t, H }, at = { (k + 0.5) * L, t / 2, z } } end
-      for _, x in ipairs { t / 2, W - t / 2 } do
-        for k = 0, 2 do box { size = { t, L, H }, at = { x, t + (k + 0.5) * L, z } } end
-      end
-    else
-      for _, x in ipairs { t / 2, W - t / 2 } do
-        for k = 0, 2 do box { size = { t, L, H }, at = { x, (k + 0.5) * L, z } } end
-        box { size = { t, t, H }, at = { x, 3 * L + t / 2, z } }
-      end
-      for k = 0, 6 do box { size = { L, t, H }, at = { t + (k + 0.5) * L, t / 2, z } } end
-    end
-  end
+  facade { length = 8, returns = 3, courses = 8, unit = { 0.4, 0.2 } }
   load { live = "horizontal", direction = { 0, -1 } }
 end
 local function dome_model(interface)
@@ -37,7 +21,7 @@ end
 cones[#cones + 1] = { facets = 8, kind = "adaptive" }
 print(("%-8s %-10s %-14s %6s %12s %5s %8s"):format("model", "interface", "cone", "facets", "alpha",
       "LPs", "time s"))
-for _, build in ipairs { { "facade", facade }, { "dome", dome_model } } do
+for _, build in ipairs { { "facade", facade_model }, { "dome", dome_model } } do
   for _, interface in ipairs { "vertex", "resultant" } do
     build[2](interface)
     for _, cone in ipairs(cones) do

@@ -532,6 +532,26 @@ static int model_interface(lua_State *L)
     return 0;
 }
 
+/* What load{} asked, applied (2D and 3D alike): kinds[0] and kinds[1] are
+ * the dead and live choices (0 self weight / horizontal, 1 none, 2 the
+ * point load in pl, -1 not given). */
+static void apply_loads(lua_State *L, bl_model *m, const int kinds[2], const bl_point_load pl[2])
+{
+    bl_error err;
+    for (int k = 0; k < 2; k++)
+        if (kinds[k] == 2 && bl_model_add_point_load(m, &pl[k], &err)) fail(L, "%s", err.msg);
+    if (kinds[0] == 0) m->self_weight = 1;
+    if (kinds[0] == 1 || kinds[1] == 1) {
+        int live = kinds[1] == 1, n = 0;
+        if (live) m->live_weight = 0;
+        else m->self_weight = 0;
+        for (int i = 0; i < m->nloads; i++)
+            if (m->loads[i].live != live) m->loads[n++] = m->loads[i];
+        m->nloads = n;
+    }
+    if (kinds[1] == 0) m->live_weight = 1;
+}
+
 /* load{} in a 3D model: the self weight along gravity; a live load
  * proportional to weight along a horizontal {dx, dy} or any {dx, dy, dz}
  * direction; point loads { block, at = {x, y, z}, force = {fx, fy, fz},
@@ -591,22 +611,8 @@ static int load_3d(lua_State *L, bl_model *m)
         }
         if (bl_v3_norm(dir) == 0) fail(L, "load: field 'direction' must be a non-zero vector");
     }
-    bl_error err;
-    for (int k = 0; k < 2; k++)
-        if (kinds[k] == 2 && bl_model_add_point_load(m, &pl[k], &err)) return fail(L, "%s", err.msg);
-    if (kinds[0] == 0) m->self_weight = 1;
-    if (kinds[0] == 1 || kinds[1] == 1) {
-        int live = kinds[1] == 1, n = 0;
-        if (live) m->live_weight = 0;
-        else m->self_weight = 0;
-        for (int i = 0; i < m->nloads; i++)
-            if (m->loads[i].live != live) m->loads[n++] = m->loads[i];
-        m->nloads = n;
-    }
-    if (kinds[1] == 0) {
-        m->live_weight = 1;
-        m->live_dir3 = bl_v3_scale(dir, 1.0 / bl_v3_norm(dir));
-    }
+    apply_loads(L, m, kinds, pl);
+    if (kinds[1] == 0) m->live_dir3 = bl_v3_scale(dir, 1.0 / bl_v3_norm(dir));
     if (!isnan(tilt)) {
         m->tilt = tilt * M_PI / 180.0;
         m->tilt_axis = axis;
@@ -667,23 +673,8 @@ static int model_load(lua_State *L)
         return fail(L, "load: field 'tilt' must be an angle in degrees between -90 and 90");
     if (field_given(L, 2, "axis")) return fail(L, "load: field 'axis' is for 3D models");
 
-    bl_error err;
-    for (int k = 0; k < 2; k++)
-        if (kinds[k] == 2 && bl_model_add_point_load(m, &pl[k], &err))
-            return fail(L, "%s", err.msg);
-    if (kinds[0] == 0) m->self_weight = 1;
-    if (kinds[0] == 1 || kinds[1] == 1) {
-        int live = kinds[1] == 1, n = 0;
-        if (live) m->live_weight = 0;
-        else m->self_weight = 0;
-        for (int i = 0; i < m->nloads; i++)
-            if (m->loads[i].live != live) m->loads[n++] = m->loads[i];
-        m->nloads = n;
-    }
-    if (kinds[1] == 0) {
-        m->live_weight = 1;
-        m->live_dir = bl_v2_scale(dir, 1.0 / bl_v2_norm(dir));
-    }
+    apply_loads(L, m, kinds, pl);
+    if (kinds[1] == 0) m->live_dir = bl_v2_scale(dir, 1.0 / bl_v2_norm(dir));
     if (!isnan(tilt)) m->tilt = tilt * M_PI / 180.0;
     return 0;
 }

@@ -387,6 +387,13 @@ T.ok(d0.verified and d1.verified and math.abs(d0.alpha - d1.alpha) <= 1e-6 * d0.
      "dome, loads 45 degrees apart (a symmetry turn): the same alpha with the adaptive cone",
      ("%.9f vs %.9f"):format(d0.alpha, d1.alpha))
 
+-- facade{}: n + 2m blocks in the courses where the facade runs through,
+-- 2(m + 1) + n - 1 where the returns do
+model { dim = 3, mu = 0.65 }
+local fb, fbase = facade { length = 8, returns = 3, courses = 8, unit = { 0.4, 0.2 } }
+T.eq(#fb, 4 * (8 + 2 * 3) + 4 * (2 * (3 + 1) + 8 - 1), "facade{}: 116 blocks in 8 interlocked courses")
+T.ok(current():block_info(fbase).support and contacts {} > 0, "facade{}: a fixed base, and every block touches")
+
 T.raises(function() model { interface = "resultant" } end, "the interface model is refused in 2D",
          "model", "'interface'")
 
