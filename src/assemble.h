@@ -71,10 +71,13 @@ typedef struct bl_system {
  * with err set when the model cannot be assembled.  2D models only. */
 bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *err);
 
-/* The Coulomb-cone system of a 3D model, the cone linearized as given
- * (src/assemble3.c): six rows per free block, a force at every vertex of
- * every contact polygon. */
-bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *err);
+/* The system of a 3D model (src/assemble3.c): six rows per free block, a
+ * force at every vertex of every contact polygon; BL_FRICTION_CONE: the
+ * cone linearized as given; BL_FRICTION_FIXED: a normal and two shear
+ * columns whose bounds +-mu n come from bl_system_fixed_bounds (the
+ * circumscribed 4-facet pyramid with n fixed; vertex model only). */
+bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_form form,
+                            bl_error *err);
 
 /* 3D: the forces (n, t2, t3 per contact point, physical units) from x, and
  * the mechanism (vx, vy, vz, wx, wy, wz per block) from y. */

@@ -107,11 +107,18 @@ static bl_vec3 moment(bl_vec3 a, bl_vec3 b)
     return c;
 }
 
-bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *err)
+bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_form form,
+                            bl_error *err)
 {
     bl_system *s = bl_system_start(m, 6, err);
     if (!s) return NULL;
-    s->form = BL_FRICTION_CONE;
+    s->form = form;
+    if (form == BL_FRICTION_FIXED && m->interface_model == BL_RESULTANT) {
+        bl_system_free(s);
+        bl_error_set(err, "solve: the non-associative flow in 3D takes the vertex model so far "
+                          "(model{ interface = \"vertex\" })");
+        return NULL;
+    }
     double nt[256][3], couple[256];
     bl_column_kind kind[256];
     int resultant = m->interface_model == BL_RESULTANT;
@@ -124,8 +131,9 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
                               "blocks %d and %d)", in->a + 1, in->b + 1);
             return NULL;
         }
+        double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
         for (int q = 0; q < in->np; q++, npoints++)
-            nforce += point_columns(in->mu, cone, npoints, resultant, q == 0, nt, couple, kind);
+            nforce += point_columns(mu, cone, npoints, resultant, q == 0, nt, couple, kind);
     }
     double *fL = calloc((size_t)s->nrows, sizeof *fL);
     if (!fL || bl_system_allocate(s, nforce, npoints, 12 * (size_t)nforce + (size_t)s->nrows + 6)) {
@@ -145,8 +153,13 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
             double lever = torsion_lever(in, &cen);
             mut = m->mu_t > 0.0 ? m->mu_t : (isfinite(in->mu) ? in->mu : 0.0) * lever;
         }
+        /* the fixed form: a normal and two shears at every point, the
+         * shears bounded by +-mu n (bl_system_fixed_bounds), which is the
+         * circumscribed 4-facet pyramid with n fixed */
+        double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
+        int capped = form == BL_FRICTION_FIXED && isfinite(in->mu);
         for (int q = 0; q < in->np; q++, point++) {
-            int ncol = point_columns(in->mu, cone, point, resultant, q == 0, nt, couple, kind);
+            int ncol = point_columns(mu, cone, point, resultant, q == 0, nt, couple, kind);
             s->mu[point] = in->mu;
             for (int e = 0; e < ncol; e++, c++) {
                 bl_vec3 fn = bl_v3_scale(in->n3, nt[e][0]);
@@ -156,8 +169,8 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_error *er
                  * couple is mu_t per unit of its normal force */
                 bl_vec3 tw = bl_v3_scale(in->n3, couple[e] * (kind[e] == BL_COL_SHEAR ? 1.0 : mut));
                 s->colptr[c] = nz;
-                s->lo[c] = kind[e] == BL_COL_SHEAR ? -INFINITY : 0.0;
-                s->hi[c] = INFINITY;
+                s->lo[c] = kind[e] == BL_COL_SHEAR && !capped ? -INFINITY : 0.0;
+                s->hi[c] = kind[e] == BL_COL_SHEAR && capped ? 0.0 : INFINITY;
                 s->col_point[c] = point;
                 s->col_kind[c] = (signed char)kind[e];
                 memcpy(s->col_nt + 3 * c, nt[e], sizeof nt[e]);

@@ -72,7 +72,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     bl_lp_status st = BL_LP_FAILED;
     double t2 = bl_clock(), t3 = t2, prev = NAN, solve_time = 0.0;
     for (int round = 1;; round++) {
-        sys = m->dim == 3 ? bl_system_build3(m, &cone, err) : bl_system_build(m, BL_FRICTION_CONE, err);
+        sys = m->dim == 3 ? bl_system_build3(m, &cone, BL_FRICTION_CONE, err) : bl_system_build(m, BL_FRICTION_CONE, err);
         if (!sys) break;
         bl_lp_problem p = {sys->nrows, sys->ncols, sys->colptr, sys->rowind, sys->val,
                            sys->lo,    sys->hi,    sys->rhs,    sys->obj};

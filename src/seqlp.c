@@ -26,7 +26,7 @@ void bl_seqlp_options_default(bl_seqlp_options *o)
 typedef struct run {
     bl_system *cone, *fixed;
     bl_lp *lp_fixed, *lp_cone;
-    double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt;
+    double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt, *dt3; /* dt3: 3D, along t3 */
     double t0;             /* when the run began */
     int iterations;        /* of the random-state LPs */
     int shown;             /* a progress line is on the screen */
@@ -48,9 +48,34 @@ static void run_free(run *r)
     free(r->w);
     free(r->dn);
     free(r->dt);
+    free(r->dt3);
     free(r->obj);
     free(r->best_x);
     free(r->best_y);
+}
+
+/* The systems of the run: in 3D the cone is the circumscribed 4-facet
+ * pyramid, the one the fixed form's box bounds |t2|, |t3| <= mu n match. */
+static bl_system *build(const bl_model *m, bl_friction_form form, bl_error *err)
+{
+    if (m->dim != 3) return bl_system_build(m, form, err);
+    bl_cone square = {.facets = 4, .circumscribed = 1};
+    return bl_system_build3(m, &square, form, err);
+}
+
+/* The relative velocity of every contact point from the mechanism y:
+ * normal dn, tangential dt (3D: along t2, and dt3 along t3). */
+static void point_motion(run *r, const double *y)
+{
+    const bl_system *f = r->fixed;
+    bl_system_point_motion(f, y, r->w, r->dn, r->dt);
+    if (f->dim != 3) return;
+    for (int j = 0; j < f->nforce; j++)
+        if (f->col_kind[j] == BL_COL_SHEAR) {
+            int p = f->col_point[j];
+            if (f->col_nt[3 * j + 1] != 0.0) r->dt[p] = r->w[j];
+            else r->dt3[p] = r->w[j];
+        }
 }
 
 /* The certificate: at alpha, forces in Coulomb's cone that fit the
@@ -61,15 +86,24 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
                             const bl_solve_options *o, bl_error *err)
 {
     const bl_system *c = r->cone, *f = r->fixed;
-    bl_system_point_motion(f, y, r->w, r->dn, r->dt);
+    point_motion(r, y);
     double V = 0.0;
-    for (int p = 0; p < f->npoints; p++) V = fmax(V, hypot(r->dn[p], r->dt[p]));
+    for (int p = 0; p < f->npoints; p++)
+        V = fmax(V, hypot(r->dn[p], hypot(r->dt[p], c->dim == 3 ? r->dt3[p] : 0.0)));
     double eps = slip * V;
     for (int j = 0; j < c->nforce; j++) {
         int p = c->col_point[j];
         double lo = c->lo[j], hi = c->hi[j];
         if (r->dn[p] > eps) {
             lo = hi = 0.0; /* opening: no force */
+        } else if (c->dim == 3) {
+            /* 3D, the square pyramid: friction on the corner (or side)
+             * against each component of the slip that is not zero */
+            const double *nt = c->col_nt + 3 * j;
+            if (c->col_kind[j] == BL_COL_PYRAMID &&
+                ((fabs(r->dt[p]) > eps && nt[1] * r->dt[p] > 0.0) ||
+                 (fabs(r->dt3[p]) > eps && nt[2] * r->dt3[p] > 0.0)))
+                lo = hi = 0.0;
         } else if (fabs(r->dt[p]) > eps) {
             /* sliding: friction opposes the slip of b on a */
             int up = r->dt[p] > 0.0;
@@ -140,7 +174,8 @@ static void name_blocks(run *r, bl_solution *s, int lp)
     for (int b = 0; b < m->nblocks && len < sizeof s->note; b++) {
         int row = r->fixed->block_row[b];
         if (row < 0) continue;
-        double w = fmax(fabs(ray[row]), fmax(fabs(ray[row + 1]), fabs(ray[row + 2])));
+        double w = 0.0;
+        for (int i = 0; i < (r->fixed->dim == 3 ? 6 : 3); i++) w = fmax(w, fabs(ray[row + i]));
         if (w < 1e-3 * big) continue;
         if (named < 8)
             len += (size_t)snprintf(s->note + len, sizeof s->note - len, "%s%d",
@@ -254,7 +289,7 @@ static bl_lp_status random_state(run *r, double alpha, unsigned long long *rng,
     if (st == BL_LP_OPTIMAL) {
         const double *x = bl_lp_primal(lp);
         for (int q = 0; q < c->npoints; q++) r->n[q] = 0.0;
-        for (int j = 0; j < c->nforce; j++) r->n[c->col_point[j]] += x[j] * c->col_nt[2 * j];
+        for (int j = 0; j < c->nforce; j++) r->n[c->col_point[j]] += x[j] * c->col_nt[c->dim * j];
     }
     bl_lp_free(lp);
     return st;
@@ -269,7 +304,7 @@ static bl_system *rigid_system(const bl_model *m, bl_error *err)
         return NULL;
     }
     for (int k = 0; k < c->ninterfaces; k++) c->interfaces[k].mu = INFINITY;
-    bl_system *s = bl_system_build(c, BL_FRICTION_CONE, err);
+    bl_system *s = build(c, BL_FRICTION_CONE, err);
     bl_model_free(c);
     return s;
 }
@@ -303,13 +338,14 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     run r = {0};
     r.t0 = t0;
     const bl_model *mc = s->model;
-    r.cone = bl_system_build(mc, BL_FRICTION_CONE, err);
-    r.fixed = r.cone ? bl_system_build(mc, BL_FRICTION_FIXED, err) : NULL;
+    r.cone = build(mc, BL_FRICTION_CONE, err);
+    r.fixed = r.cone ? build(mc, BL_FRICTION_FIXED, err) : NULL;
     if (!r.fixed) goto fail;
     int np = r.fixed->npoints, nc = r.fixed->ncols, ncc = r.cone->ncols;
     r.n = calloc((size_t)np + 1, sizeof *r.n);
     r.dn = calloc((size_t)np + 1, sizeof *r.dn);
     r.dt = calloc((size_t)np + 1, sizeof *r.dt);
+    r.dt3 = calloc((size_t)np + 1, sizeof *r.dt3);
     r.lo = malloc((size_t)nc * sizeof *r.lo);
     r.hi = malloc((size_t)nc * sizeof *r.hi);
     r.clo = malloc((size_t)ncc * sizeof *r.clo);
@@ -318,7 +354,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.w = malloc((size_t)(nc > ncc ? nc : ncc) * sizeof *r.w);
     r.best_x = malloc((size_t)ncc * sizeof *r.best_x);
     r.best_y = malloc((size_t)r.fixed->nrows * sizeof *r.best_y);
-    if (!r.n || !r.dn || !r.dt || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
+    if (!r.n || !r.dn || !r.dt || !r.dt3 || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
         !r.best_x || !r.best_y) {
         bl_error_set(err, "solve: out of memory");
         goto fail;
@@ -360,7 +396,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     for (int k = 0; k <= starts && stop == BL_LP_OPTIMAL; k++) {
         double from = r.found ? r.best_alpha : s->alpha_assoc;
         if (k == 0) {
-            for (int p = 0; p < np; p++) r.n[p] = s->force[2 * p] / r.fixed->W0;
+            for (int p = 0; p < np; p++) r.n[p] = s->force[mc->dim * p] / r.fixed->W0;
         } else {
             bl_lp_status st = random_state(&r, uniform(&rng) * from, &rng, o, err);
             s->lps++;
@@ -388,8 +424,13 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         s->alpha = r.best_alpha;
         s->status = s->alpha < 0.0 ? BL_UNSTABLE : BL_OPTIMAL;
         s->certified = 1;
-        bl_system_forces(r.cone, mc, r.best_x, s->force);
-        bl_system_mechanism(r.fixed, mc, r.best_y, s->u);
+        if (mc->dim == 3) {
+            bl_system_forces3(r.cone, r.best_x, s->force);
+            bl_system_mechanism3(r.fixed, mc, r.best_y, s->u);
+        } else {
+            bl_system_forces(r.cone, mc, r.best_x, s->force);
+            bl_system_mechanism(r.fixed, mc, r.best_y, s->u);
+        }
         bl_solution_classify(s);
         double tv = bl_clock();
         s->verified = bl_verify_nonassoc(r.cone, r.fixed, s->alpha, r.best_x, r.best_y,

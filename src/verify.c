@@ -80,7 +80,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     int np = cone->npoints;
     size_t nw = (size_t)(fixed->nforce > cone->nrows ? fixed->nforce : cone->nrows) + 1;
     double *w = malloc(nw * sizeof *w);
-    double *buf = malloc((4 * (size_t)np + 1) * sizeof *buf);
+    double *buf = malloc((6 * (size_t)np + 1) * sizeof *buf);
     if (!w || !buf) {
         free(w);
         free(buf);
@@ -88,25 +88,36 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
             res->normalization = res->work = res->flow = res->dilatancy = INFINITY;
         return 0;
     }
+    /* per point: normal and tangential motion and force; 3D: the tangent
+     * split along t2 (dt, t) and t3 (dt3, t3), the capacity a square */
     double *dn = buf, *dt = buf + np, *n = buf + 2 * np, *t = buf + 3 * np;
+    double *dt3 = buf + 4 * np, *t3 = buf + 5 * np;
+    int d3 = cone->dim == 3, st = cone->dim;
 
     /* statics, on the cone system */
     bl_system_residual(cone, xc, alpha, w);
     double eq = 0.0;
     for (int i = 0; i < cone->nrows; i++) eq = fmax(eq, fabs(w[i]));
     double yield = 0.0;
-    for (int p = 0; p < np; p++) n[p] = t[p] = 0.0;
+    for (int p = 0; p < np; p++) n[p] = t[p] = t3[p] = dt3[p] = 0.0;
     for (int j = 0; j < cone->nforce; j++) {
         yield = fmax(yield, fmax(cone->lo[j] - xc[j], xc[j] - cone->hi[j]));
-        n[cone->col_point[j]] += xc[j] * cone->col_nt[2 * j];
-        t[cone->col_point[j]] += xc[j] * cone->col_nt[2 * j + 1];
+        n[cone->col_point[j]] += xc[j] * cone->col_nt[st * j];
+        t[cone->col_point[j]] += xc[j] * cone->col_nt[st * j + 1];
+        if (d3) t3[cone->col_point[j]] += xc[j] * cone->col_nt[3 * j + 2];
     }
 
     /* kinematics, per contact point */
     bl_system_point_motion(fixed, y, w, dn, dt);
+    for (int j = 0; d3 && j < fixed->nforce; j++)
+        if (fixed->col_kind[j] == BL_COL_SHEAR) {
+            int p = fixed->col_point[j];
+            if (fixed->col_nt[3 * j + 1] != 0.0) dt[p] = w[j];
+            else dt3[p] = w[j];
+        }
     double V = 0.0, X = 0.0;
     for (int p = 0; p < np; p++) {
-        V = fmax(V, hypot(dn[p], dt[p]));
+        V = fmax(V, hypot(dn[p], hypot(dt[p], dt3[p])));
         X = fmax(X, fabs(n[p]));
     }
     if (V == 0.0) V = 1.0;
@@ -118,9 +129,10 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         comp = fmax(comp, fabs(n[p] * dn[p]) / (X * V));
         if (isfinite(cone->mu[p])) {
             flow = fmax(flow, fabs(t[p] * dt[p] + R * fabs(dt[p])) / (X * V));
-            dissipation += R * fabs(dt[p]);
+            flow = fmax(flow, fabs(t3[p] * dt3[p] + R * fabs(dt3[p])) / (X * V));
+            dissipation += R * (fabs(dt[p]) + fabs(dt3[p]));
         }
-        if (fabs(dt[p]) > slip * V && n[p] > slip * X) dil = fmax(dil, dn[p] / V);
+        if (hypot(dt[p], dt3[p]) > slip * V && n[p] > slip * X) dil = fmax(dil, dn[p] / V);
     }
     res->equilibrium = eq;
     res->yield = fmax(yield, 0.0);

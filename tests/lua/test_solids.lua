@@ -397,8 +397,26 @@ T.ok(current():block_info(fbase).support and contacts {} > 0, "facade{}: a fixed
 T.raises(function() model { interface = "resultant" } end, "the interface model is refused in 2D",
          "model", "'interface'")
 
-T.raises(function() solve { flow = "nonassociative" } end, "3D: the non-associative flow is refused",
-         "solve", "associative")
+-- the non-associative flow in 3D (the sequence of LPs on the square
+-- pyramid): the closed forms, and never above the associative answer
+for _, case in ipairs { { 0.5, 1, 0.3 }, { 0.5, 1, 0.8 }, { 0.4, 0.3, 0.5 } } do
+  local b, h, mu = case[1], case[2], case[3]
+  model { dim = 3, mu = mu }
+  box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+  box { size = { b, 2 * b, h } }
+  local r = solve { flow = "nonassociative" }
+  T.ok(r.certified and r.verified and math.abs(r.alpha - math.min(mu, b / h)) <= 1e-9,
+       ("3D box %g x %g x %g, mu = %g, non-associative: min(mu, b/h), certified"):format(b, 2 * b, h, mu),
+       ("%.10f"):format(r.alpha))
+end
+model { dim = 3, mu = 0.65 }
+wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
+local n3 = solve { flow = "nonassociative" }
+local a3 = solve { cone = { facets = 4, kind = "circumscribed" } }
+T.ok(n3.certified and n3.verified and n3.alpha <= a3.alpha * (1 + 1e-9),
+     "W4 extruded, non-associative: certified, verified, not above the associative alpha",
+     ("%.6f vs %.6f"):format(n3.alpha, a3.alpha))
+T.raises(function() solve { method = "mpec" } end, "3D: method mpec is refused", "mpec", "3D")
 T.raises(function() solve { cone = { facets = 2 } } end, "3D: a pyramid of 2 facets is refused",
          "facets", "3 to 64")
 
