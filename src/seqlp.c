@@ -313,7 +313,10 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
 {
     double t0 = bl_clock();
     bl_solution *s;
-    if (bl_assoc_solve(m, &o->base, &s, err)) return -1;
+    /* (3D: the associative start on the sequence's own square pyramid) */
+    bl_solve_options base = o->base;
+    if (m->dim == 3) base.cone = (bl_cone){.facets = 4, .circumscribed = 1};
+    if (bl_assoc_solve(m, &base, &s, err)) return -1;
     /* Only joints with finite, non-zero friction dilate: without any, the
      * associative answer is the non-associative one.  Without an
      * associative answer there is nothing to start from: that result is
