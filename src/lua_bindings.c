@@ -698,6 +698,27 @@ static int model_stats(lua_State *L)
     return 1;
 }
 
+/* A new table with what an interface is: its blocks a and b, mu, its
+ * points (2D: the two ends; 3D: the contact polygon) and its normal. */
+static void push_interface(lua_State *L, const bl_model *m, const bl_interface *in)
+{
+    lua_createtable(L, 0, 10);
+    set_integer(L, "a", in->a + 1);
+    set_integer(L, "b", in->b + 1);
+    set_number(L, "mu", in->mu);
+    int n = m->dim == 3 ? in->np : 2;
+    lua_createtable(L, n, 0);
+    for (int i = 0; i < n; i++) {
+        if (m->dim == 3) push_triple(L, in->poly[i]);
+        else push_point(L, in->p[i]);
+        lua_rawseti(L, -2, i + 1);
+    }
+    lua_setfield(L, -2, "points");
+    if (m->dim == 3) push_triple(L, in->n3);
+    else push_point(L, in->normal);
+    lua_setfield(L, -2, "normal");
+}
+
 /* model:interface_info(k) -> { a, b, normal, points, mu, cohesion, area } of
  * detected interface k (detecting first when needed). */
 static int model_interface_info(lua_State *L)
@@ -710,32 +731,10 @@ static int model_interface_info(lua_State *L)
         return fail(L, "interface_info: argument 1 must be an interface number from 1 to %d, "
                        "got %lld", m->ninterfaces, (long long)k);
     const bl_interface *in = &m->interfaces[k - 1];
-    lua_createtable(L, 0, 7);
-    set_integer(L, "a", in->a + 1);
-    set_integer(L, "b", in->b + 1);
-    set_number(L, "mu", in->mu);
+    push_interface(L, m, in);
     set_number(L, "cohesion", in->cohesion);
-    if (m->dim == 3) {
-        lua_createtable(L, in->np, 0);
-        for (int i = 0; i < in->np; i++) {
-            push_triple(L, in->poly[i]);
-            lua_rawseti(L, -2, i + 1);
-        }
-        lua_setfield(L, -2, "points");
-        push_triple(L, in->n3);
-        lua_setfield(L, -2, "normal");
-        set_number(L, "area", in->area3);
-    } else {
-        lua_createtable(L, 2, 0);
-        push_point(L, in->p[0]);
-        lua_rawseti(L, -2, 1);
-        push_point(L, in->p[1]);
-        lua_rawseti(L, -2, 2);
-        lua_setfield(L, -2, "points");
-        push_point(L, in->normal);
-        lua_setfield(L, -2, "normal");
-        set_number(L, "length", bl_v2_norm(bl_v2_sub(in->p[1], in->p[0])));
-    }
+    if (m->dim == 3) set_number(L, "area", in->area3);
+    else set_number(L, "length", bl_v2_norm(bl_v2_sub(in->p[1], in->p[0])));
     return 1;
 }
 
@@ -926,20 +925,9 @@ static void push_details(lua_State *L, const bl_solution *s)
     const double *f = s->force;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
-        lua_createtable(L, 0, 10);
-        set_integer(L, "a", in->a + 1);
-        set_integer(L, "b", in->b + 1);
+        push_interface(L, m, in);
         set_string(L, "state", bl_state_name(s->state[k]));
-        set_number(L, "mu", in->mu);
         if (m->dim == 3) {
-            lua_createtable(L, in->np, 0);
-            for (int e = 0; e < in->np; e++) {
-                push_triple(L, in->poly[e]);
-                lua_rawseti(L, -2, e + 1);
-            }
-            lua_setfield(L, -2, "points");
-            push_triple(L, in->n3);
-            lua_setfield(L, -2, "normal");
             push_triple(L, in->t2);
             lua_setfield(L, -2, "t2");
             double N = 0.0, T2 = 0.0, T3 = 0.0;
@@ -955,14 +943,6 @@ static void push_details(lua_State *L, const bl_solution *s)
             set_number(L, "N", N);
             set_number(L, "T", hypot(T2, T3));
         } else {
-            lua_createtable(L, 2, 0);
-            push_point(L, in->p[0]);
-            lua_rawseti(L, -2, 1);
-            push_point(L, in->p[1]);
-            lua_rawseti(L, -2, 2);
-            lua_setfield(L, -2, "points");
-            push_point(L, in->normal);
-            lua_setfield(L, -2, "normal");
             if (s->hinge[k] >= 0) {
                 push_point(L, in->p[s->hinge[k]]);
                 lua_setfield(L, -2, "hinge");
