@@ -19,9 +19,21 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <omp.h>
 #include <suitesparse/cholmod.h>
 
 #include "lp_engine.h"
+
+/* The loops over the internal columns and the products with A and A^T run
+ * on p->threads threads (OMP_NUM_THREADS or the processors, at most
+ * MAX_THREADS) when there are enough columns to pay for the fork; CHOLMOD's
+ * factorization and solves stay on one (doc/performance.md, "Threads"). */
+#define MAX_THREADS 4
+#define PAR_MIN 20000
+#define PAR_FOR _Pragma("omp parallel for num_threads(p->threads) if (n >= PAR_MIN) schedule(static)")
+#define PAR_FOR_WITH(clauses) \
+    _Pragma(STR(omp parallel for num_threads(p->threads) if (n >= PAR_MIN) schedule(static) clauses))
+#define STR(x) #x
 
 enum { COL_LOWER, COL_BOXED };
 
@@ -54,6 +66,8 @@ typedef struct ipm {
     /* iterates and work */
     double *x, *z, *s, *w, *y, a;
     double *theta, *rd, *rp, *ru, *rhat, *xz, *sw, *v, *tmp, *ntmp;
+    double *part;       /* mul_A's per-thread sums (m per extra thread) */
+    int threads;
     step dir, cor;      /* the direction and a centrality corrector */
     double *xu, *yu;    /* answers in user terms */
     int iterations;
@@ -81,7 +95,7 @@ static void destroy(void *e)
                     &p->s,    &p->w,     &p->y,  &p->theta, &p->rd,  &p->rp,  &p->ru,
                     &p->rhat, &p->xz,    &p->sw, &p->v,    &p->tmp,  &p->xu,  &p->yu,
                     &p->dir.x,  &p->dir.z,   &p->dir.s, &p->dir.w, &p->dir.y,  &p->cor.x, &p->cor.z,
-                    &p->cor.s,  &p->cor.w,   &p->cor.y, &p->ntmp};
+                    &p->cor.s,  &p->cor.w,   &p->cor.y, &p->ntmp, &p->part};
     for (size_t i = 0; i < sizeof d / sizeof *d; i++) free(*d[i]);
     free(p->ft_src);
     free(p->ucp);
@@ -216,6 +230,7 @@ static int build(ipm *p, bl_error *err)
 static void *create(const bl_lp_problem *pr, const bl_lp_settings *s, bl_error *err)
 {
     bl_one_thread();
+    omp_set_max_active_levels(1);
     ipm *p = calloc(1, sizeof *p);
     if (!p) {
         bl_error_set(err, "lp: out of memory");
@@ -253,8 +268,11 @@ static void *create(const bl_lp_problem *pr, const bl_lp_settings *s, bl_error *
     p->v = xcalloc(m, sizeof *p->v);
     p->tmp = xcalloc(m, sizeof *p->tmp);
     p->yu = xcalloc(m, sizeof *p->yu);
+    int procs = omp_get_max_threads();
+    p->threads = procs < 1 ? 1 : procs > MAX_THREADS ? MAX_THREADS : procs;
+    p->part = xcalloc(m * (size_t)(p->threads - 1), sizeof *p->part);
     if (!p->ucp || !p->uri || !p->uval || !p->lo || !p->hi || !p->obj || !p->shift || !p->xu ||
-        !p->rhs || !p->b || !p->g || !p->y || !p->dir.y || !p->cor.y || !p->rp || !p->v || !p->tmp || !p->yu) {
+        !p->rhs || !p->b || !p->g || !p->y || !p->dir.y || !p->cor.y || !p->rp || !p->v || !p->tmp || !p->yu || !p->part) {
         bl_error_set(err, "lp: out of memory");
         destroy(p);
         return NULL;
@@ -305,21 +323,37 @@ static double dot(const double *a, const double *b, int n)
  * separate copy of A's values in F's pattern cost 23 MB at 40,100 blocks
  * and pushed the peak over 500 MB. */
 
-/* out (m) = A v (n), over the internal columns */
+/* out (m) = A v (n), over the internal columns: each thread scatters its
+ * share of the columns into its own copy of out, then the copies are summed. */
 static void mul_A(const ipm *p, const double *v, double *out)
 {
-    memset(out, 0, (size_t)p->m * sizeof *out);
-    for (int k = 0; k < p->n; k++) {
-        int j = p->map[k];
-        double t = p->sign[k] * v[k];
-        for (int q = p->ucp[j]; q < p->ucp[j + 1]; q++) out[p->uri[q]] += p->uval[q] * t;
+    int n = p->n, m = p->m;
+#pragma omp parallel num_threads(p->threads) if (n >= PAR_MIN)
+    {
+        int t = omp_get_thread_num(), nt = omp_get_num_threads();
+        double *o = t == 0 ? out : p->part + (size_t)(t - 1) * (size_t)m;
+        memset(o, 0, (size_t)m * sizeof *o);
+        int k0 = (int)((long)n * t / nt), k1 = (int)((long)n * (t + 1) / nt);
+        for (int k = k0; k < k1; k++) {
+            int j = p->map[k];
+            double s = p->sign[k] * v[k];
+            for (int q = p->ucp[j]; q < p->ucp[j + 1]; q++) o[p->uri[q]] += p->uval[q] * s;
+        }
+        if (nt > 1) {
+#pragma omp barrier
+#pragma omp for schedule(static)
+            for (int i = 0; i < m; i++)
+                for (int u = 1; u < nt; u++) out[i] += p->part[(size_t)(u - 1) * (size_t)m + (size_t)i];
+        }
     }
 }
 
 /* out (n) = A^T v (m) */
 static void mul_At(const ipm *p, const double *v, double *out)
 {
-    for (int k = 0; k < p->n; k++) {
+    int n = p->n;
+    PAR_FOR
+    for (int k = 0; k < n; k++) {
         int j = p->map[k];
         double t = 0.0;
         for (int q = p->ucp[j]; q < p->ucp[j + 1]; q++) t += p->uval[q] * v[p->uri[q]];
@@ -351,7 +385,9 @@ static int factor(ipm *p, double *delta)
     for (int tries = 0; tries < 8; tries++, *delta *= 100.0) {
         double beta[2] = {*delta, 0.0};
         p->cm.status = CHOLMOD_OK;
+        omp_set_max_active_levels(0); /* CHOLMOD's own regions: serial (performance.md) */
         cholmod_super_numeric(p->F, p->Ft, beta, p->L, &p->cm);
+        omp_set_max_active_levels(1);
         if (p->cm.status == CHOLMOD_OK && p->L->minor == p->L->n) break;
         if (p->cm.status < 0) break;
     }
@@ -380,7 +416,9 @@ static int msolve(ipm *p, double *rhs)
 /* The rest of a direction from its dx: dz, ds, dw. */
 static void complete(ipm *p, step *d, int full)
 {
-    for (int j = 0; j < p->n; j++) {
+    int n = p->n;
+    PAR_FOR
+    for (int j = 0; j < n; j++) {
         d->z[j] = (p->xz[j] - p->z[j] * d->x[j]) / p->x[j];
         if (p->kind[j] == COL_BOXED) {
             d->s[j] = (full ? p->ru[j] : 0.0) - d->x[j];
@@ -398,6 +436,7 @@ static void complete(ipm *p, step *d, int full)
 static int direction(ipm *p, step *d, int full, double ra, double gv)
 {
     int n = p->n, m = p->m;
+    PAR_FOR
     for (int j = 0; j < n; j++) {
         double r = (full ? p->rd[j] : 0.0) - p->xz[j] / p->x[j];
         if (p->kind[j] == COL_BOXED) r += (p->sw[j] - (full ? p->w[j] * p->ru[j] : 0.0)) / p->s[j];
@@ -411,6 +450,7 @@ static int direction(ipm *p, step *d, int full, double ra, double gv)
     d->a = gv != 0.0 ? (dot(p->g, d->y, m) - (full ? ra : 0.0)) / gv : 0.0;
     for (int i = 0; i < m; i++) d->y[i] -= p->v[i] * d->a;
     mul_At(p, d->y, d->x);
+    PAR_FOR
     for (int j = 0; j < n; j++) d->x[j] = p->theta[j] * (d->x[j] - p->rhat[j]);
     complete(p, d, full);
     return 0;
@@ -442,6 +482,7 @@ static int refine(ipm *p, step *d, double gv)
         }
         d->a += da;
         mul_At(p, p->tmp, p->ntmp);
+        PAR_FOR
         for (int j = 0; j < n; j++) {
             double dx = p->theta[j] * p->ntmp[j];
             d->x[j] += dx;
@@ -461,7 +502,9 @@ static double max_step(const ipm *p, const double *v1, const double *d1, const d
 {
     /* over x (or z) and, on boxed columns, s (or w) */
     double t = 1.0;
-    for (int j = 0; j < p->n; j++) {
+    int n = p->n;
+    PAR_FOR_WITH(reduction(min : t))
+    for (int j = 0; j < n; j++) {
         if (d1[j] < 0.0) t = fmin(t, -v1[j] / d1[j]);
         if (p->kind[j] == COL_BOXED && d2[j] < 0.0) t = fmin(t, -v2[j] / d2[j]);
     }
@@ -582,6 +625,7 @@ static bl_lp_status solve(void *e)
         for (int i = 0; i < m; i++) p->rp[i] = p->b[i] - p->rp[i] - p->g[i] * p->a;
         mul_At(p, p->y, p->rd);
         double gap_c = 0.0;
+        PAR_FOR_WITH(reduction(+ : gap_c))
         for (int j = 0; j < n; j++) {
             p->rd[j] = p->c[j] - p->rd[j] - p->z[j];
             gap_c += p->x[j] * p->z[j];
@@ -632,6 +676,7 @@ static bl_lp_status solve(void *e)
             }
         }
 
+        PAR_FOR
         for (int j = 0; j < n; j++) {
             double d = p->z[j] / p->x[j];
             if (p->kind[j] == COL_BOXED) d += p->w[j] / p->s[j];
@@ -645,6 +690,7 @@ static bl_lp_status solve(void *e)
 
         /* predictor: the affine-scaling direction */
         step *d = &p->dir;
+        PAR_FOR
         for (int j = 0; j < n; j++) {
             p->xz[j] = -p->x[j] * p->z[j];
             p->sw[j] = p->kind[j] == COL_BOXED ? -p->s[j] * p->w[j] : 0.0;
@@ -653,6 +699,7 @@ static bl_lp_status solve(void *e)
         double tp = max_step(p, p->x, d->x, p->s, d->s);
         double td = max_step(p, p->z, d->z, p->w, d->w);
         double mu_aff = 0.0;
+        PAR_FOR_WITH(reduction(+ : mu_aff))
         for (int j = 0; j < n; j++) {
             mu_aff += (p->x[j] + tp * d->x[j]) * (p->z[j] + td * d->z[j]);
             if (p->kind[j] == COL_BOXED)
@@ -662,6 +709,7 @@ static bl_lp_status solve(void *e)
         double sigma = fmin(pow(mu_aff / mu, 3.0), 1.0);
 
         /* Mehrotra's corrector: centring plus the predictor's second-order term */
+        PAR_FOR
         for (int j = 0; j < n; j++) {
             p->xz[j] = sigma * mu - p->x[j] * p->z[j] - d->x[j] * d->z[j];
             p->sw[j] = p->kind[j] == COL_BOXED
@@ -683,6 +731,7 @@ static bl_lp_status solve(void *e)
         for (int k = 0; k < 10 && fmin(tp, td) < 1.0; k++) {
             double ttp = fmin(1.0, tp + 0.2), ttd = fmin(1.0, td + 0.2);
             double lo = 0.1 * sigma * mu, hi = 10.0 * sigma * mu;
+            PAR_FOR
             for (int j = 0; j < n; j++) {
                 double v = (p->x[j] + ttp * d->x[j]) * (p->z[j] + ttd * d->z[j]);
                 p->xz[j] = v < lo ? lo - v : v > hi ? fmax(hi - v, -hi) : 0.0;
@@ -694,6 +743,7 @@ static bl_lp_status solve(void *e)
             }
             step *c = &p->cor;
             if (direction(p, c, 0, 0.0, gv)) break;
+            PAR_FOR
             for (int j = 0; j < n; j++) {
                 c->x[j] += d->x[j];
                 c->z[j] += d->z[j];
@@ -724,6 +774,7 @@ static bl_lp_status solve(void *e)
          * class late, stalled the method). */
         for (int tries = 0; tries < 40; tries++) {
             double sum = 0.0, low = INFINITY;
+            PAR_FOR_WITH(reduction(+ : sum) reduction(min : low))
             for (int j = 0; j < n; j++) {
                 double v = (p->x[j] + tp * d->x[j]) * (p->z[j] + td * d->z[j]);
                 sum += v;
@@ -738,6 +789,7 @@ static bl_lp_status solve(void *e)
             tp *= 0.95;
             td *= 0.95;
         }
+        PAR_FOR
         for (int j = 0; j < n; j++) {
             p->x[j] += tp * d->x[j];
             p->z[j] += td * d->z[j];
