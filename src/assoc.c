@@ -15,6 +15,7 @@ void bl_solve_options_default(bl_solve_options *o)
     o->verbose = 0;
     o->time_limit = 0;
     o->iterations = 0;
+    o->threads = 0;
     o->lp = BL_LP_AUTO;
     o->mps = NULL;
     o->cone = (bl_cone){.facets = 8};
@@ -29,6 +30,7 @@ bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const
     ls.verbose = o->verbose;
     ls.max_seconds = o->time_limit;
     ls.max_iterations = o->iterations;
+    ls.threads = o->threads;
     bl_lp_problem p = {s->nrows, s->ncols, s->colptr, s->rowind, s->val,
                        lo,       hi,       s->rhs,    obj ? obj : s->obj};
     return bl_lp_create(&p, &ls, err);

@@ -16,6 +16,7 @@ typedef struct bl_solve_options {
     int verbose;        /* let the LP engine print */
     double time_limit;  /* seconds for the LP, 0: none */
     int iterations;     /* iteration cap of the LP engine, 0: its default */
+    int threads;        /* of the interior point, 0: every core */
     bl_lp_engine_kind lp;
     const char *mps;    /* write the LP to this MPS file first, or NULL */
     bl_cone cone;       /* 3D: the friction pyramid (8 facets, inscribed) */

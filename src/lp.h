@@ -42,6 +42,7 @@ typedef struct bl_lp_settings {
     double max_seconds;  /* 0: no time limit */
     double tolerance;    /* simplex: primal and dual feasibility;
                             ipm: relative residuals and gap */
+    int threads;         /* ipm: threads, 0: OMP_NUM_THREADS or every core */
 } bl_lp_settings;
 
 void bl_lp_settings_default(bl_lp_settings *s);
@@ -58,7 +59,8 @@ typedef enum bl_lp_status {
 
 typedef struct bl_lp bl_lp;
 
-/* NULL with err set on failure.  The problem's arrays are copied. */
+/* NULL with err set on failure.  The matrix (colptr, rowind, val) is kept
+ * by reference and must outlive the bl_lp; the other arrays are copied. */
 bl_lp *bl_lp_create(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *err);
 void bl_lp_free(bl_lp *lp);
 

@@ -11,8 +11,8 @@
  *     the rows) is kept out of the normal matrix: a bordered system solved
  *     with one extra right-hand side per factorization;
  *   - the normal matrix M = F F^T + delta I, F = A Theta^(1/2), is factored
- *     by CHOLMOD (supernodal, METIS ordering): analysed once, refactored
- *     numerically every iteration.
+ *     by CHOLMOD (normal.h): analysed once, refactored numerically every
+ *     iteration, in two domains on two threads when it is large.
  */
 #include <math.h>
 #include <stdio.h>
@@ -20,9 +20,9 @@
 #include <string.h>
 
 #include <omp.h>
-#include <suitesparse/cholmod.h>
 
 #include "lp_engine.h"
+#include "normal.h"
 
 /* The loops over the internal columns and the products with A and A^T run
  * on p->threads threads (OMP_NUM_THREADS or the processors, at most
@@ -46,8 +46,9 @@ typedef struct ipm {
     bl_lp_settings set;
     /* the user's problem (copied) */
     int m, nu;
-    int *ucp, *uri;
-    double *uval, *lo, *hi, *rhs, *obj;
+    const int *ucp, *uri;   /* the matrix, by reference (lp.h) */
+    const double *uval;
+    double *lo, *hi, *rhs, *obj; /* copied */
     /* the internal problem: minimize c.x + ca a, A x + g a = b, 0 <= x (<= U) */
     int border;         /* user column kept out of the factor, -1 if none */
     int n;              /* internal columns */
@@ -56,13 +57,7 @@ typedef struct ipm {
     double *shift;      /* per user column */
     signed char *kind;  /* COL_LOWER or COL_BOXED */
     double *U, *c, *b, *g, ca;
-    /* CHOLMOD */
-    cholmod_common cm;
-    cholmod_sparse *F;  /* A Theta^(1/2), rows in the factor's order after analysis */
-    cholmod_sparse *Ft; /* F^T, refilled from F through ft_src every iteration */
-    int *ft_src;        /* entry of Ft -> entry of F */
-    cholmod_factor *L;
-    cholmod_dense *X, *Y, *E; /* cholmod_solve2's solution and workspace, reused */
+    bl_normal *N;       /* the normal matrix and its factor */
     /* iterates and work */
     double *x, *z, *s, *w, *y, a;
     double *theta, *rd, *rp, *ru, *rhat, *xz, *sw, *v, *tmp, *ntmp;
@@ -83,81 +78,32 @@ static void destroy(void *e)
 {
     ipm *p = e;
     if (!p) return;
-    if (p->F) cholmod_free_sparse(&p->F, &p->cm);
-    if (p->Ft) cholmod_free_sparse(&p->Ft, &p->cm);
-    if (p->L) cholmod_free_factor(&p->L, &p->cm);
-    cholmod_free_dense(&p->X, &p->cm);
-    cholmod_free_dense(&p->Y, &p->cm);
-    cholmod_free_dense(&p->E, &p->cm);
-    cholmod_finish(&p->cm);
-    double **d[] = {&p->uval, &p->lo,    &p->hi, &p->rhs,  &p->obj, &p->sign, &p->shift,
+    bl_normal_free(p->N);
+    double **d[] = {&p->lo,    &p->hi, &p->rhs,  &p->obj, &p->sign, &p->shift,
                     &p->U,    &p->c,     &p->b,  &p->g,    &p->x,   &p->z,
                     &p->s,    &p->w,     &p->y,  &p->theta, &p->rd,  &p->rp,  &p->ru,
                     &p->rhat, &p->xz,    &p->sw, &p->v,    &p->tmp,  &p->xu,  &p->yu,
                     &p->dir.x,  &p->dir.z,   &p->dir.s, &p->dir.w, &p->dir.y,  &p->cor.x, &p->cor.z,
                     &p->cor.s,  &p->cor.w,   &p->cor.y, &p->ntmp, &p->part};
     for (size_t i = 0; i < sizeof d / sizeof *d; i++) free(*d[i]);
-    free(p->ft_src);
-    free(p->ucp);
-    free(p->uri);
     free(p->map);
     free(p->kind);
     free(p);
 }
 
-/* Puts F's rows in the factor's order and builds the pattern of its
- * transpose, once per analysis: cholmod_factorize would otherwise form
- * both, with two transposes and their allocations, at every iteration
- * (8 % of the time at 10,050 blocks).  cholmod_super_numeric takes them
- * as they are; it does not need sorted columns. */
-static int permute_rows(ipm *p)
-{
-    int m = p->m, n = p->n, nnz = ((int *)p->F->p)[n];
-    int *Fp = p->F->p, *Fi = p->F->i, *perm = p->L->Perm;
-    int *inv = malloc((size_t)m * sizeof *inv);
-    p->Ft = cholmod_allocate_sparse((size_t)n, (size_t)m, (size_t)nnz, 1, 1, 0, CHOLMOD_REAL,
-                                    &p->cm);
-    free(p->ft_src);
-    p->ft_src = xcalloc((size_t)nnz, sizeof *p->ft_src);
-    if (!inv || !p->Ft || !p->ft_src) {
-        free(inv);
-        return -1;
-    }
-    for (int i = 0; i < m; i++) inv[perm[i]] = i;
-    int *Tp = p->Ft->p, *Ti = p->Ft->i;
-    memset(Tp, 0, (size_t)(m + 1) * sizeof *Tp);
-    for (int q = 0; q < nnz; q++) {
-        Fi[q] = inv[Fi[q]];
-        Tp[Fi[q] + 1]++;
-    }
-    for (int i = 0; i < m; i++) Tp[i + 1] += Tp[i];
-    memcpy(inv, Tp, (size_t)m * sizeof *inv); /* next free slot per row */
-    for (int k = 0; k < n; k++)
-        for (int q = Fp[k]; q < Fp[k + 1]; q++) {
-            int t = inv[Fi[q]]++;
-            Ti[t] = k;
-            p->ft_src[t] = q;
-        }
-    free(inv);
-    return 0;
-}
-
-/* Builds the internal problem from the user's bounds: column mapping, F's
- * pattern and values of A, the symbolic analysis, and the work arrays. */
+/* Builds the internal problem from the user's bounds: column mapping, the
+ * analysis of the normal matrix, and the work arrays. */
 static int build(ipm *p, bl_error *err)
 {
-    if (p->F) cholmod_free_sparse(&p->F, &p->cm);
-    if (p->Ft) cholmod_free_sparse(&p->Ft, &p->cm);
-    if (p->L) cholmod_free_factor(&p->L, &p->cm);
+    bl_normal_free(p->N);
+    p->N = NULL;
     p->border = -1;
     for (int j = 0; j < p->nu; j++)
         if (isinf(p->lo[j]) && isinf(p->hi[j]) && p->obj[j] != 0.0) p->border = j;
-    int n = 0, nnz = 0;
+    int n = 0;
     for (int j = 0; j < p->nu; j++) {
         if (j == p->border || p->lo[j] == p->hi[j]) continue;
-        int k = isinf(p->lo[j]) && isinf(p->hi[j]) ? 2 : 1;
-        n += k;
-        nnz += k * (p->ucp[j + 1] - p->ucp[j]);
+        n += isinf(p->lo[j]) && isinf(p->hi[j]) ? 2 : 1;
     }
     p->n = n;
     free(p->map);
@@ -170,17 +116,14 @@ static int build(ipm *p, bl_error *err)
     p->kind = xcalloc((size_t)n, sizeof *p->kind);
     p->U = xcalloc((size_t)n, sizeof *p->U);
     p->c = xcalloc((size_t)n, sizeof *p->c);
-    p->F = cholmod_allocate_sparse((size_t)p->m, (size_t)n, (size_t)nnz, 1, 1, 0, CHOLMOD_REAL,
-                                   &p->cm);
-    if (!p->map || !p->sign || !p->kind || !p->U || !p->c || !p->F)
+    if (!p->map || !p->sign || !p->kind || !p->U || !p->c)
         return bl_error_set(err, "lp: out of memory building the interior-point problem");
 
     /* b = rhs - sum of the constant parts; g = the border column */
     memcpy(p->b, p->rhs, (size_t)p->m * sizeof *p->b);
     memset(p->g, 0, (size_t)p->m * sizeof *p->g);
     p->ca = 0.0;
-    int *Fp = p->F->p, *Fi = p->F->i, col = 0, q = 0;
-    double *Fx = p->F->x;
+    int col = 0;
     for (int j = 0; j < p->nu; j++) {
         double lo = p->lo[j], hi = p->hi[j];
         if (j == p->border) {
@@ -201,30 +144,28 @@ static int build(ipm *p, bl_error *err)
             p->kind[col] = isfinite(lo) && isfinite(hi) ? COL_BOXED : COL_LOWER;
             p->U[col] = p->kind[col] == COL_BOXED ? hi - lo : INFINITY;
             p->c[col] = -p->obj[j] * sg;
-            Fp[col] = q;
-            for (int t = p->ucp[j]; t < p->ucp[j + 1]; t++, q++) {
-                Fi[q] = p->uri[t];
-                Fx[q] = sg * p->uval[t];
-            }
         }
     }
-    Fp[col] = q;
 
+    /* the upper-bound pairs (s, w) and their residuals and directions only
+     * when some column is boxed: 30 MB at 40,100 blocks otherwise */
+    int nbox = 0;
+    for (int k = 0; k < n; k++) nbox += p->kind[k] == COL_BOXED;
     size_t nn = (size_t)n;
-    double **arr[] = {&p->x,   &p->z,   &p->s,   &p->w,   &p->theta, &p->rd,  &p->rhat,
-                      &p->xz,  &p->sw,  &p->ru,  &p->dir.x, &p->dir.z,   &p->dir.s, &p->dir.w,
-                      &p->cor.x, &p->cor.z, &p->cor.s, &p->cor.w, &p->ntmp};
+    double **arr[] = {&p->x,     &p->z,     &p->theta, &p->rd,    &p->rhat,  &p->xz,
+                      &p->dir.x, &p->dir.z, &p->cor.x, &p->cor.z, &p->ntmp,  &p->s,
+                      &p->w,     &p->sw,    &p->ru,    &p->dir.s, &p->dir.w, &p->cor.s,
+                      &p->cor.w};
     for (size_t i = 0; i < sizeof arr / sizeof *arr; i++) {
         free(*arr[i]);
+        *arr[i] = NULL;
+        if (i >= 11 && nbox == 0) continue;
         *arr[i] = xcalloc(nn, sizeof(double));
         if (!*arr[i]) return bl_error_set(err, "lp: out of memory");
     }
-    p->L = cholmod_analyze(p->F, &p->cm);
-    if (!p->L) return bl_error_set(err, "lp: CHOLMOD could not analyse the normal matrix");
-    if (p->set.verbose)
-        fprintf(stderr, "ipm: %d rows, %d columns; factor %.0f non-zeros, %.3g flops\n", p->m, p->n,
-                p->cm.lnz, p->cm.fl);
-    return permute_rows(p) ? bl_error_set(err, "lp: out of memory") : 0;
+    bl_normal_pattern pat = {p->m, n, p->ucp, p->uri, p->map, p->uval};
+    p->N = bl_normal_analyse(&pat, p->threads, p->set.verbose, err);
+    return p->N ? 0 : -1;
 }
 
 static void *create(const bl_lp_problem *pr, const bl_lp_settings *s, bl_error *err)
@@ -236,23 +177,15 @@ static void *create(const bl_lp_problem *pr, const bl_lp_settings *s, bl_error *
         bl_error_set(err, "lp: out of memory");
         return NULL;
     }
-    cholmod_start(&p->cm);
-    p->cm.print = s->verbose ? 3 : 0;
-    p->cm.error_handler = NULL;
-    p->cm.supernodal = CHOLMOD_SUPERNODAL;
-    p->cm.nmethods = 1;
-    p->cm.method[0].ordering = CHOLMOD_METIS;
-    p->cm.postorder = 1;
-    p->cm.quick_return_if_not_posdef = 1;
     p->set = *s;
     if (p->set.tolerance <= 0) p->set.tolerance = 1e-8;
     if (p->set.max_iterations <= 0) p->set.max_iterations = 200;
     p->m = pr->nrows;
     p->nu = pr->ncols;
-    size_t m = (size_t)pr->nrows, nu = (size_t)pr->ncols, nnz = (size_t)pr->colptr[pr->ncols];
-    p->ucp = xcalloc(nu + 1, sizeof *p->ucp);
-    p->uri = xcalloc(nnz, sizeof *p->uri);
-    p->uval = xcalloc(nnz, sizeof *p->uval);
+    size_t m = (size_t)pr->nrows, nu = (size_t)pr->ncols;
+    p->ucp = pr->colptr;
+    p->uri = pr->rowind;
+    p->uval = pr->val;
     p->lo = xcalloc(nu, sizeof *p->lo);
     p->hi = xcalloc(nu, sizeof *p->hi);
     p->obj = xcalloc(nu, sizeof *p->obj);
@@ -268,18 +201,15 @@ static void *create(const bl_lp_problem *pr, const bl_lp_settings *s, bl_error *
     p->v = xcalloc(m, sizeof *p->v);
     p->tmp = xcalloc(m, sizeof *p->tmp);
     p->yu = xcalloc(m, sizeof *p->yu);
-    int procs = omp_get_max_threads();
+    int procs = s->threads > 0 ? s->threads : omp_get_max_threads();
     p->threads = procs < 1 ? 1 : procs > MAX_THREADS ? MAX_THREADS : procs;
     p->part = xcalloc(m * (size_t)(p->threads - 1), sizeof *p->part);
-    if (!p->ucp || !p->uri || !p->uval || !p->lo || !p->hi || !p->obj || !p->shift || !p->xu ||
+    if (!p->lo || !p->hi || !p->obj || !p->shift || !p->xu ||
         !p->rhs || !p->b || !p->g || !p->y || !p->dir.y || !p->cor.y || !p->rp || !p->v || !p->tmp || !p->yu || !p->part) {
         bl_error_set(err, "lp: out of memory");
         destroy(p);
         return NULL;
     }
-    memcpy(p->ucp, pr->colptr, (nu + 1) * sizeof *p->ucp);
-    memcpy(p->uri, pr->rowind, nnz * sizeof *p->uri);
-    memcpy(p->uval, pr->val, nnz * sizeof *p->uval);
     memcpy(p->lo, pr->lo, nu * sizeof *p->lo);
     memcpy(p->hi, pr->hi, nu * sizeof *p->hi);
     memcpy(p->obj, pr->obj, nu * sizeof *p->obj);
@@ -299,7 +229,6 @@ static void set_bounds(void *e, const double *lo, const double *hi)
     bl_error err;
     if (build(p, &err)) {
         /* out of memory: solve will report failure */
-        if (p->L) cholmod_free_factor(&p->L, &p->cm);
     }
 }
 
@@ -361,56 +290,36 @@ static void mul_At(const ipm *p, const double *v, double *out)
     }
 }
 
-/* Factors A Theta A^T + delta I; raises delta when CHOLMOD meets a
- * non-positive pivot.  Returns 0 or -1. */
+/* Factors A Theta A^T + delta I; raises delta when a pivot is not
+ * positive.  Returns 0 or -1. */
 static int factor(ipm *p, double *delta)
 {
-    const int *Fp = p->F->p;
-    double *Fx = p->F->x, dmax = 0.0;
-    for (int k = 0; k < p->n; k++) {
-        double r = p->sign[k] * sqrt(p->theta[k]);
-        const double *a = p->uval + p->ucp[p->map[k]];
-        for (int q = Fp[k]; q < Fp[k + 1]; q++) {
-            Fx[q] = a[q - Fp[k]] * r;
-            dmax = fmax(dmax, Fx[q] * Fx[q]);
-        }
-    }
+    double *scale = p->ntmp; /* free between the uses in refine() */
+    int n = p->n;
+    PAR_FOR
+    for (int k = 0; k < n; k++) scale[k] = p->sign[k] * sqrt(p->theta[k]);
+    double t0 = bl_clock();
     /* A tiny regularization: larger relative values stalled the primal
      * residual in the prototype (DESIGN 3.1). */
-    double *Tx = p->Ft->x;
-    for (int t = 0, nnz = Fp[p->n]; t < nnz; t++) Tx[t] = Fx[p->ft_src[t]];
-    *delta = fmax(1e-20 * dmax, 1e-10);
-    double t0 = bl_clock();
+    *delta = fmax(1e-20 * bl_normal_fill(p->N, scale), 1e-10);
     p->factorizations++;
-    for (int tries = 0; tries < 8; tries++, *delta *= 100.0) {
-        double beta[2] = {*delta, 0.0};
-        p->cm.status = CHOLMOD_OK;
-        omp_set_max_active_levels(0); /* CHOLMOD's own regions: serial (performance.md) */
-        cholmod_super_numeric(p->F, p->Ft, beta, p->L, &p->cm);
-        omp_set_max_active_levels(1);
-        if (p->cm.status == CHOLMOD_OK && p->L->minor == p->L->n) break;
-        if (p->cm.status < 0) break;
+    int r = 1;
+    for (int tries = 0; tries < 8 && r > 0; tries++) {
+        r = bl_normal_factor(p->N, *delta);
+        if (r > 0) *delta *= 100.0;
     }
     p->factor_time += bl_clock() - t0;
-    return p->cm.status == CHOLMOD_OK && p->L->minor == p->L->n ? 0 : -1;
+    return r == 0 ? 0 : -1;
 }
 
 /* Solves M out = rhs in place (m). */
 static int msolve(ipm *p, double *rhs)
 {
-    cholmod_dense B = {0};
-    B.nrow = B.d = (size_t)p->m;
-    B.ncol = 1;
-    B.nzmax = (size_t)p->m;
-    B.x = rhs;
-    B.xtype = CHOLMOD_REAL;
-    B.dtype = CHOLMOD_DOUBLE;
     double t0 = bl_clock();
-    int ok = cholmod_solve2(CHOLMOD_A, p->L, &B, NULL, &p->X, NULL, &p->Y, &p->E, &p->cm);
-    if (ok) memcpy(rhs, p->X->x, (size_t)p->m * sizeof *rhs);
+    int r = bl_normal_solve(p->N, rhs);
     p->solves++;
     p->solve_time += bl_clock() - t0;
-    return ok ? 0 : -1;
+    return r;
 }
 
 /* The rest of a direction from its dx: dz, ds, dw. */
@@ -423,7 +332,7 @@ static void complete(ipm *p, step *d, int full)
         if (p->kind[j] == COL_BOXED) {
             d->s[j] = (full ? p->ru[j] : 0.0) - d->x[j];
             d->w[j] = (p->sw[j] - p->w[j] * d->s[j]) / p->s[j];
-        } else {
+        } else if (d->s) {
             d->s[j] = d->w[j] = 0.0;
         }
     }
@@ -553,7 +462,7 @@ static int starting_point(ipm *p)
             p->w[j] = p->z[j];
         } else {
             p->x[j] += hx;
-            p->s[j] = p->w[j] = 0.0;
+            if (p->s) p->s[j] = p->w[j] = 0.0;
         }
     }
     p->a = 0.0;
@@ -582,7 +491,7 @@ static void warm_point(ipm *p)
             p->s[k] = p->U[k] - p->x[k];
             p->w[k] = fmax(-zj, push);
         } else {
-            p->s[k] = p->w[k] = 0.0;
+            if (p->s) p->s[k] = p->w[k] = 0.0;
         }
     }
     p->a = p->border >= 0 ? p->xu[p->border] : 0.0;
@@ -601,7 +510,7 @@ static bl_lp_status solve(void *e)
 {
     ipm *p = e;
     int n = p->n, m = p->m, nbox = 0;
-    if (!p->L) return BL_LP_FAILED;
+    if (!p->N) return BL_LP_FAILED;
     for (int j = 0; j < n; j++) nbox += p->kind[j] == COL_BOXED;
     double t0 = bl_clock();
     double tol = p->set.tolerance;
@@ -633,7 +542,7 @@ static bl_lp_status solve(void *e)
                 p->rd[j] += p->w[j];
                 p->ru[j] = p->U[j] - p->x[j] - p->s[j];
                 gap_c += p->s[j] * p->w[j];
-            } else {
+            } else if (p->ru) {
                 p->ru[j] = 0.0;
             }
         }
@@ -643,7 +552,7 @@ static bl_lp_status solve(void *e)
         double dobj = dot(p->b, p->y, m);
         for (int j = 0; j < n; j++)
             if (p->kind[j] == COL_BOXED) dobj -= p->U[j] * p->w[j];
-        double ep = inf_norm(p->rp, m) / bnorm, eu = inf_norm(p->ru, n) / unorm;
+        double ep = inf_norm(p->rp, m) / bnorm, eu = p->ru ? inf_norm(p->ru, n) / unorm : 0.0;
         double ed = fmax(inf_norm(p->rd, n), fabs(ra)) / cnorm;
         double eg = fabs(pobj - dobj) / (1.0 + fabs(pobj));
         if (p->set.verbose)
@@ -693,7 +602,7 @@ static bl_lp_status solve(void *e)
         PAR_FOR
         for (int j = 0; j < n; j++) {
             p->xz[j] = -p->x[j] * p->z[j];
-            p->sw[j] = p->kind[j] == COL_BOXED ? -p->s[j] * p->w[j] : 0.0;
+            if (p->sw) p->sw[j] = p->kind[j] == COL_BOXED ? -p->s[j] * p->w[j] : 0.0;
         }
         if (direction(p, d, 1, ra, gv)) { status = BL_LP_FAILED; break; }
         double tp = max_step(p, p->x, d->x, p->s, d->s);
@@ -712,9 +621,10 @@ static bl_lp_status solve(void *e)
         PAR_FOR
         for (int j = 0; j < n; j++) {
             p->xz[j] = sigma * mu - p->x[j] * p->z[j] - d->x[j] * d->z[j];
-            p->sw[j] = p->kind[j] == COL_BOXED
-                           ? sigma * mu - p->s[j] * p->w[j] - d->s[j] * d->w[j]
-                           : 0.0;
+            if (p->sw)
+                p->sw[j] = p->kind[j] == COL_BOXED
+                               ? sigma * mu - p->s[j] * p->w[j] - d->s[j] * d->w[j]
+                               : 0.0;
         }
         if (direction(p, d, 1, ra, gv)) { status = BL_LP_FAILED; break; }
         tp = max_step(p, p->x, d->x, p->s, d->s);
@@ -735,7 +645,7 @@ static bl_lp_status solve(void *e)
             for (int j = 0; j < n; j++) {
                 double v = (p->x[j] + ttp * d->x[j]) * (p->z[j] + ttd * d->z[j]);
                 p->xz[j] = v < lo ? lo - v : v > hi ? fmax(hi - v, -hi) : 0.0;
-                p->sw[j] = 0.0;
+                if (p->sw) p->sw[j] = 0.0;
                 if (p->kind[j] == COL_BOXED) {
                     v = (p->s[j] + ttp * d->s[j]) * (p->w[j] + ttd * d->w[j]);
                     p->sw[j] = v < lo ? lo - v : v > hi ? fmax(hi - v, -hi) : 0.0;
@@ -747,8 +657,10 @@ static bl_lp_status solve(void *e)
             for (int j = 0; j < n; j++) {
                 c->x[j] += d->x[j];
                 c->z[j] += d->z[j];
-                c->s[j] += d->s[j];
-                c->w[j] += d->w[j];
+                if (c->s) {
+                    c->s[j] += d->s[j];
+                    c->w[j] += d->w[j];
+                }
             }
             for (int i = 0; i < m; i++) c->y[i] += d->y[i];
             c->a += d->a;
@@ -828,7 +740,7 @@ static const double *ray(const void *e)
 static double factor_nnz(const void *e)
 {
     const ipm *p = e;
-    return p->L ? p->cm.lnz : 0.0;
+    return p->N ? bl_normal_nnz(p->N) : 0.0;
 }
 
 const bl_lp_backend bl_lp_ipm_engine = {

@@ -975,7 +975,7 @@ static int model_solve(lua_State *L)
     static const char *const fields[] = {
         "flow",     "method", "lp",    "tolerance", "time_limit",      "iterations", "verbose",
         "mps",      "beta",   "settle", "slip",     "lps",             "starts",     "seed",
-        "progress", "start",  "penalty", "complementarity", "cone", NULL};
+        "progress", "start",  "penalty", "complementarity", "cone",       "threads", NULL};
     static const char *const flows[] = {"associative", "nonassociative", NULL};
     static const char *const methods[] = {"assoc", "seqlp", "mpec", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
@@ -1048,6 +1048,10 @@ static int model_solve(lua_State *L)
     if (iters != floor(iters) || iters > 1e9)
         fail(L, "solve: field 'iterations' must be a positive integer, got %g", iters);
     o.iterations = (int)iters;
+    double threads = number_field(L, 2, "solve", "threads", 0, POSITIVE);
+    if (threads != floor(threads) || threads > 1024)
+        fail(L, "solve: field 'threads' must be a positive integer, got %g", threads);
+    o.threads = (int)threads;
     if (field(L, 2, "cone")) {
         static const char *const cone_fields[] = {"facets", "kind", NULL};
         static const char *const kinds[] = {"inscribed", "circumscribed", "adaptive", NULL};
