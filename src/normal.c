@@ -32,8 +32,7 @@
 #include "normal.h"
 
 /* BLAS and LAPACK */
-void dsyrk_(const char *uplo, const char *trans, const int *n, const int *k, const double *alpha,
-            const double *a, const int *lda, const double *beta, double *c, const int *ldc);
+void dlauum_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 void dtrmv_(const char *uplo, const char *trans, const char *diag, const int *n, const double *a,
             const int *lda, double *x, const int *incx);
 void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
@@ -56,7 +55,7 @@ typedef struct part {
     cholmod_factor *L;
     cholmod_dense *X, *Y, *E; /* cholmod_solve2's result and workspace */
     double *b;              /* nrow: a right-hand side in the factor's order */
-    double *T, *W, *z;      /* the separator's block of L (ns x ns), T T^T, T w */
+    double *T, *W, *z;      /* the separator's block of L (ns x ns), T T^T reversed, T w */
     double *u;              /* the rows of L's largest supernode */
     int status;             /* of the last factorization: 0, 1 (not positive definite), -1 */
     double fmax;
@@ -402,9 +401,15 @@ static void part_factor(part *P, double delta)
                 : P->cm.status == CHOLMOD_OK && P->L->minor == P->L->n ? 0
                                                                         : 1;
     if (P->status == 0 && P->ns > 0) {
-        const double one = 1.0, zero = 0.0;
+        /* T T^T in a third of dsyrk's flops: with J the reversal, U = J T J
+         * is upper triangular and LAPACK's dlauum forms U U^T = J T T^T J */
+        int ns = P->ns, info;
         separator_block(P);
-        dsyrk_("L", "N", &P->ns, &P->ns, &one, P->T, &P->ns, &zero, P->W, &P->ns);
+        for (int j = 0; j < ns; j++)
+            for (int i = j; i < ns; i++)
+                P->W[(size_t)(ns - 1 - i) + (size_t)(ns - 1 - j) * (size_t)ns] =
+                    P->T[(size_t)i + (size_t)j * (size_t)ns];
+        dlauum_("U", &ns, P->W, &ns, &info);
     }
 }
 
@@ -426,7 +431,11 @@ int bl_normal_factor(bl_normal *N, double delta)
     const double *W0 = N->p[0].W, *W1 = N->p[1].W;
     for (int j = 0; j < ns; j++) {
         size_t c = (size_t)j * (size_t)ns;
-        for (int i = j; i < ns; i++) N->S[c + (size_t)i] = W0[c + (size_t)i] + W1[c + (size_t)i];
+        for (int i = j; i < ns; i++) {
+            /* (T T^T)(i, j) = W(ns-1-i, ns-1-j), in W's upper triangle */
+            size_t w = (size_t)(ns - 1 - i) + (size_t)(ns - 1 - j) * (size_t)ns;
+            N->S[c + (size_t)i] = W0[w] + W1[w];
+        }
         N->S[c + (size_t)j] -= delta;
     }
     int info = 0;
