@@ -187,6 +187,17 @@ static void hinge_dot(cairo_t *cr, const pic *P, bl_vec2 q)
     cairo_stroke(cr);
 }
 
+static void hinge_line(cairo_t *cr, const pic *P, bl_vec2 a, bl_vec2 b)
+{
+    cairo_new_path(cr);
+    cairo_move_to(cr, a.x, a.y);
+    cairo_line_to(cr, b.x, b.y);
+    color(cr, HINGE);
+    cairo_set_line_width(cr, fmax(2.5, 5.0 * P->unit));
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_stroke(cr);
+}
+
 static void sliding_line(cairo_t *cr, const pic *P, bl_vec2 a, bl_vec2 b)
 {
     cairo_new_path(cr);
@@ -340,7 +351,7 @@ static void layout(pic *P, const bl_solution *s, int width, double azimuth, doub
     const char *name = bl_status_name(s->status);
     snprintf(P->caption, sizeof P->caption, "alpha = %.5g  (%s, %s flow, %s%s)", s->alpha,
              name ? name : "?", s->flow, s->method, s->verified ? ", verified" : "");
-    P->has_legend = P->m && P->k > 0.0 && P->dim == 2;
+    P->has_legend = P->m && P->k > 0.0;
 
     /* text widths need a cairo context; a 1x1 image gives the same metrics
      * as the real surfaces for the toy font API */
@@ -377,6 +388,84 @@ static int farther(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* 3D: the side of a joint that moves less over its contact polygon. */
+static int anchor3(const pic *P, const bl_interface *f)
+{
+    double da = 0.0, db = 0.0;
+    for (int e = 0; e < f->np; e++) {
+        if (moves(P, f->a)) da += bl_v3_norm(velocity3(P->s, f->a, f->poly[e]));
+        if (moves(P, f->b)) db += bl_v3_norm(velocity3(P->s, f->b, f->poly[e]));
+    }
+    return db < da ? f->b : f->a;
+}
+
+/* Whether joint i gets a 3D marker: sliding, separating or rocking. */
+static int marked3(const pic *P, int i)
+{
+    bl_state st = P->s->state[i];
+    return P->m->interfaces[i].np >= 2 &&
+           (st == BL_SLIDING || st == BL_SEPARATING || st == BL_ROCKING);
+}
+
+/* One piece of a 3D joint marker: edge e of the contact polygon (vertex 0)
+ * or, on a rocking joint, its corner e alone (vertex 1).  A sliding joint
+ * outlines its polygon blue, a separating one dashed orange; a rocking
+ * joint draws its hinge, the edges whose both ends stay closed, red, and a
+ * closed corner between open ones as a red dot.  It rides with the side
+ * that moves less. */
+static void joint3(cairo_t *cr, const pic *P, int i, int e, int vertex)
+{
+    const bl_interface *f = &P->m->interfaces[i];
+    const bl_solution *s = P->s;
+    int side = anchor3(P, f), e1 = (e + 1) % f->np;
+    bl_vec2 a = dev(P, project(P, moved3(P, side, f->poly[e])));
+    bl_vec2 b = dev(P, project(P, moved3(P, side, f->poly[e1])));
+    if (vertex) hinge_dot(cr, P, a);
+    else if (s->state[i] == BL_SLIDING) sliding_line(cr, P, a, b);
+    else if (s->state[i] == BL_SEPARATING) separating_line(cr, P, a, b);
+    else hinge_line(cr, P, a, b);
+}
+
+/* The pieces of joint i's marker (see joint3) whose point (an edge's
+ * midpoint, or the corner) lies on a visible face of either block, into F
+ * with the depth of the nearest such face, so that they paint just over it
+ * and under whatever is nearer; pieces on no visible face are inside the
+ * structure and left out.  depth: per face of every block (face_off[b] +
+ * k), NAN where turned away.  Returns the number added. */
+static int joint_pieces(const pic *P, int i, const int *face_off, const double *depth, face3 *F)
+{
+    const bl_model *m = P->m;
+    const bl_interface *f = &m->interfaces[i];
+    bl_state st = P->s->state[i];
+    double size = 0.0;
+    for (int e = 0; e < f->np; e++)
+        size += bl_v3_norm(bl_v3_sub(f->poly[(e + 1) % f->np], f->poly[e]));
+    int n = 0;
+    for (int e = 0; e < f->np; e++)
+        for (int vertex = 0; vertex < 2; vertex++) {
+            int e1 = (e + 1) % f->np;
+            if (st == BL_ROCKING) {
+                int c0 = bl_solution_closed3(P->s, i, e), c1 = bl_solution_closed3(P->s, i, e1);
+                int cp = bl_solution_closed3(P->s, i, (e + f->np - 1) % f->np);
+                if (vertex ? !c0 || c1 || cp : !c0 || !c1) continue;
+            } else if (vertex) {
+                continue;
+            }
+            bl_vec3 q = vertex ? f->poly[e] : bl_v3_scale(bl_v3_add(f->poly[e], f->poly[e1]), 0.5);
+            double d = -INFINITY;
+            int blk[2] = {f->a, f->b};
+            for (int j = 0; j < 2; j++) {
+                const bl_polyhedron *S = &m->blocks[blk[j]].solid;
+                for (int k = 0; k < S->nf; k++) {
+                    double dk = depth[face_off[blk[j]] + k];
+                    if (!isnan(dk) && dk > d && bl_polyhedron_on_face(S, k, q, 1e-6 * size)) d = dk;
+                }
+            }
+            if (d > -INFINITY) F[n++] = (face3){i, -1 - (2 * e + vertex), d + 1e-9 * (1.0 + fabs(d)), 0.0};
+        }
+    return n;
+}
+
 /* 3D: the blocks as moved by the mechanism, seen along the view: faces
  * turned away are dropped, the others painted far to near, shaded by how
  * squarely they face the light (from the viewer's upper left); supports
@@ -384,10 +473,20 @@ static int farther(const void *x, const void *y)
 static void draw3(cairo_t *cr, const pic *P)
 {
     const bl_model *m = P->m;
-    int nf = 0;
-    for (int b = 0; b < m->nblocks; b++) nf += m->blocks[b].solid.nf;
-    face3 *F = malloc(((size_t)nf + 1) * sizeof *F);
-    if (!F) return;
+    int nf = 0, npieces = 0, joints = P->k > 0.0 && P->s->state;
+    int *face_off = malloc(((size_t)m->nblocks + 1) * sizeof *face_off);
+    for (int b = 0; face_off && b < m->nblocks; b++) {
+        face_off[b] = nf;
+        nf += m->blocks[b].solid.nf;
+    }
+    for (int i = 0; joints && i < m->ninterfaces; i++)
+        if (marked3(P, i)) npieces += 2 * m->interfaces[i].np;
+    face3 *F = malloc(((size_t)nf + (size_t)npieces + 1) * sizeof *F);
+    double *depth = malloc(((size_t)nf + 1) * sizeof *depth);
+    if (!F || !depth || !face_off) {
+        free(F), free(depth), free(face_off);
+        return;
+    }
     bl_vec3 light = bl_v3_add(bl_v3_add(bl_v3_scale(P->eye, 0.8), bl_v3_scale(P->up, 0.5)),
                               bl_v3_scale(P->right, -0.35));
     light = bl_v3_scale(light, 1.0 / bl_v3_norm(light));
@@ -405,14 +504,22 @@ static void draw3(cairo_t *cr, const pic *P)
                 nrm = bl_v3_add(nrm, bl_v3_cross(p, q));
             }
             double nn = bl_v3_norm(nrm);
+            depth[face_off[b] + k] = NAN;
             if (!(nn > 0.0) || bl_v3_dot(nrm, P->eye) <= 0.0) continue;
             nrm = bl_v3_scale(nrm, 1.0 / nn);
-            F[n++] = (face3){b, k, bl_v3_dot(c, P->eye) / len, fabs(bl_v3_dot(nrm, light))};
+            depth[face_off[b] + k] = bl_v3_dot(c, P->eye) / len;
+            F[n++] = (face3){b, k, depth[face_off[b] + k], fabs(bl_v3_dot(nrm, light))};
         }
     }
+    for (int i = 0; joints && i < m->ninterfaces; i++)
+        if (marked3(P, i)) n += joint_pieces(P, i, face_off, depth, F + n);
     qsort(F, (size_t)n, sizeof *F, farther);
     for (int t = 0; t < n; t++) {
         int b = F[t].block, k = F[t].face;
+        if (k < 0) { /* a piece of joint b's marker */
+            joint3(cr, P, b, (-1 - k) / 2, (-1 - k) % 2);
+            continue;
+        }
         const bl_block *B = &m->blocks[b];
         const bl_polyhedron *S = &B->solid;
         double d = 0.0;
@@ -434,6 +541,8 @@ static void draw3(cairo_t *cr, const pic *P)
         cairo_stroke(cr);
     }
     free(F);
+    free(depth);
+    free(face_off);
 }
 
 static void draw(cairo_t *cr, const pic *P)

@@ -68,6 +68,37 @@ bl_vec3 bl_polyhedron_face_normal(const bl_polyhedron *p, int k, double *area)
     return len > 0.0 ? bl_v3_scale(n, 1.0 / len) : n;
 }
 
+/* Distance from q to the segment ab. */
+static double segment_distance(bl_vec3 q, bl_vec3 a, bl_vec3 b)
+{
+    bl_vec3 ab = bl_v3_sub(b, a), aq = bl_v3_sub(q, a);
+    double ll = bl_v3_dot(ab, ab), t = ll > 0.0 ? bl_v3_dot(aq, ab) / ll : 0.0;
+    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    return bl_v3_norm(bl_v3_sub(aq, bl_v3_scale(ab, t)));
+}
+
+int bl_polyhedron_on_face(const bl_polyhedron *p, int k, bl_vec3 q, double tol)
+{
+    bl_vec3 n = bl_polyhedron_face_normal(p, k, NULL);
+    int a0 = p->fs[k], len = p->fs[k + 1] - a0;
+    if (fabs(bl_v3_dot(n, bl_v3_sub(q, p->v[p->fi[a0]]))) > tol) return 0;
+    /* crossings of a ray in the plane of the two coordinates along which
+     * the face is widest */
+    double an[3] = {fabs(n.x), fabs(n.y), fabs(n.z)};
+    int drop = an[0] >= an[1] && an[0] >= an[2] ? 0 : an[1] >= an[2] ? 1 : 2;
+    int inside = 0;
+    for (int i = 0; i < len; i++) {
+        bl_vec3 a = p->v[p->fi[a0 + i]], b = p->v[p->fi[a0 + (i + 1) % len]];
+        if (segment_distance(q, a, b) <= tol) return 1;
+        double A[3] = {a.x, a.y, a.z}, B[3] = {b.x, b.y, b.z}, Q[3] = {q.x, q.y, q.z};
+        int u = (drop + 1) % 3, v = (drop + 2) % 3;
+        if ((A[v] > Q[v]) != (B[v] > Q[v]) &&
+            Q[u] < A[u] + (Q[v] - A[v]) * (B[u] - A[u]) / (B[v] - A[v]))
+            inside = !inside;
+    }
+    return inside;
+}
+
 static void reverse_face(bl_polyhedron *p, int k)
 {
     for (int i = p->fs[k], j = p->fs[k + 1] - 1; i < j; i++, j--) {

@@ -55,6 +55,10 @@ double bl_polyhedron_volume(const bl_polyhedron *p, bl_vec3 *centroid);
 /* Unit outward normal and area of face k of a checked polyhedron. */
 bl_vec3 bl_polyhedron_face_normal(const bl_polyhedron *p, int k, double *area);
 
+/* Whether q lies on face k (within tol of its plane, and inside it or
+ * within tol of its boundary). */
+int bl_polyhedron_on_face(const bl_polyhedron *p, int k, bl_vec3 q, double tol);
+
 /* Bounding box: box[0..5] = xmin, ymin, zmin, xmax, ymax, zmax. */
 void bl_polyhedron_bbox(const bl_polyhedron *p, double box[6]);
 

@@ -159,7 +159,7 @@ static void classify3(bl_solution *s)
         for (int e = 0; e < in->np; e++)
             vmax = fmax(vmax, bl_v3_norm(relative3(s, in->a, in->b, in->poly[e])));
     }
-    double eps = MOTION_THRESHOLD * vmax;
+    double eps = s->motion_eps = MOTION_THRESHOLD * vmax;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
         int open = 0, sliding = 0;
@@ -178,6 +178,12 @@ static void classify3(bl_solution *s)
     }
 }
 
+int bl_solution_closed3(const bl_solution *s, int k, int e)
+{
+    const bl_interface *in = &s->model->interfaces[k];
+    return bl_v3_norm(relative3(s, in->a, in->b, in->poly[e])) <= s->motion_eps;
+}
+
 void bl_solution_classify(bl_solution *s)
 {
     const bl_model *m = s->model;
@@ -191,7 +197,7 @@ void bl_solution_classify(bl_solution *s)
             const bl_interface *in = &m->interfaces[k];
             vmax = fmax(vmax, bl_v2_norm(bl_solution_relative_velocity(s, in->a, in->b, in->p[e])));
         }
-    double eps = MOTION_THRESHOLD * vmax;
+    double eps = s->motion_eps = MOTION_THRESHOLD * vmax;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
         bl_vec2 tau = bl_v2(-in->normal.y, in->normal.x);

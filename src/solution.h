@@ -72,7 +72,8 @@ typedef struct bl_solution {
     int nx, ny;
     bl_state *state;         /* per interface */
     int *hinge;              /* per interface: 0 or 1 for a rocking joint's
-                                closed end, -1 otherwise */
+                                closed end, -1 otherwise (2D) */
+    double motion_eps;       /* relative velocities up to this count as zero */
     bl_residuals res;
     double tolerance;        /* what "verified" was judged against */
     int verified;
@@ -126,5 +127,9 @@ bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec
 /* Classifies every interface from the mechanism (doc/theory.md, "states"):
  * fills state and hinge. */
 void bl_solution_classify(bl_solution *s);
+
+/* 3D: whether vertex e of interface k's contact polygon stays closed (its
+ * relative velocity counts as zero), after bl_solution_classify. */
+int bl_solution_closed3(const bl_solution *s, int k, int e);
 
 #endif

@@ -53,6 +53,36 @@ T.ok(text:find("</svg>", 1, true), "3D svg from the top: a complete SVG document
 T.raises(function() r3:png(png, { view = { 0, 120 } }) end, "3D: a view above the zenith is refused", "view")
 os.remove(svg); os.remove(png)
 
+-- 3D joint markers: a box 0.5 x 1 x 1 on a slab loaded along x rocks when
+-- mu > b/h = 0.5 and slides when mu < 0.5.  The SVG strokes the hinge red
+-- (the legend draws its hinge as a dot, with another colour) and a sliding
+-- joint's four edges blue (the legend adds one blue stroke).
+local function strokes(file, colour)
+  local fh = io.open(file, "rb")
+  local t = fh and fh:read("a") or ""
+  if fh then fh:close() end
+  local n = 0
+  for _ in t:gmatch(("stroke:rgb(" .. colour .. ")"):gsub("%p", "%%%0")) do n = n + 1 end
+  return n
+end
+local RED, BLUE = "84%,9%,9%", "11%,38%,82%"
+for _, case in ipairs { { 1.0, "rocking" }, { 0.2, "sliding" } } do
+  model { dim = 3, mu = case[1] }
+  box { size = { 0.5, 1, 1 }, at = { 0, 0, 0 } }
+  box { size = { 3, 3, 0.3 }, at = { 0, 0, -0.3 }, support = true }
+  load { live = "horizontal", direction = { 1, 0 } }
+  local rb = solve { flow = "associative" }
+  T.eq(rb.interfaces[1].state, case[2], ("3D markers, mu = %g: the joint is %s"):format(case[1], case[2]))
+  rb:svg(svg, { view = { 30, 20 } })
+  local red, blue = strokes(svg, RED), strokes(svg, BLUE)
+  if case[2] == "rocking" then
+    T.ok(red >= 1 and blue == 1, ("3D markers: a red hinge line, no sliding marker (%d red, %d blue)"):format(red, blue))
+  else
+    T.ok(red == 0 and blue == 5, ("3D markers: four blue edges and the legend's, no hinge (%d red, %d blue)"):format(red, blue))
+  end
+end
+os.remove(svg)
+
 -- VTK: a block 0.5 x 1 x 1 (weight 0.5) rocking at alpha = b/h = 0.5; the
 -- interface force on it balances its weight and the live load, (-0.25, 0, 0.5)
 local vtk = dir .. "/blocklim_test.vtk"
