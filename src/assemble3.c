@@ -60,6 +60,29 @@ static int point_columns(double mu, const bl_cone *cone, int point, int resultan
     return n;
 }
 
+/* The cohesion columns at a contact point: a tangential force within a
+ * square of "radius" C added to the pyramid (the yield surface
+ * |t| <= mu n + C with the disk |t| <= C approximated): inscribed, the
+ * square with its corners on t2 and t3 (|c2| + |c3| <= C, two columns along
+ * the diagonals bounded by C / sqrt 2), or circumscribed, its sides across
+ * t2 and t3 (two columns along them bounded by C).  Returns 2. */
+static int cohesion_columns(const bl_cone *cone, double nt[][3], double *couple,
+                            bl_column_kind *kind, double *bound, double C)
+{
+    double h = cone->circumscribed ? 1.0 : sqrt(0.5);
+    double d[2][2] = {{h, h}, {h, -h}};
+    if (cone->circumscribed) d[0][1] = d[1][0] = 0.0, d[1][1] = 1.0;
+    for (int i = 0; i < 2; i++) {
+        nt[i][0] = 0.0;
+        nt[i][1] = d[i][0];
+        nt[i][2] = d[i][1];
+        couple[i] = 0.0;
+        kind[i] = BL_COL_COHESION;
+        bound[i] = cone->circumscribed ? C : C * sqrt(0.5);
+    }
+    return 2;
+}
+
 /* The torsion lever of a convex contact polygon: the mean distance of its
  * area from its centroid c, (1/A) integral |r - c| dA; times mu it is the
  * torsion capacity per unit normal force of a uniform pressure sliding
@@ -119,21 +142,23 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
                           "(model{ interface = \"vertex\" })");
         return NULL;
     }
-    double nt[256][3], couple[256];
+    double nt[256][3], couple[256], bound[256];
     bl_column_kind kind[256];
     int resultant = m->interface_model == BL_RESULTANT;
     int nforce = 0, npoints = 0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
-        if (in->cohesion > 0.0) {
+        if (in->cohesion > 0.0 && resultant) {
             bl_system_free(s);
-            bl_error_set(err, "solve: cohesion is not built for 3D models yet (interface of "
-                              "blocks %d and %d)", in->a + 1, in->b + 1);
+            bl_error_set(err, "solve: cohesion in 3D takes the vertex model so far "
+                              "(model{ interface = \"vertex\" }; interface of blocks %d and %d)",
+                         in->a + 1, in->b + 1);
             return NULL;
         }
         double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
         for (int q = 0; q < in->np; q++, npoints++)
-            nforce += point_columns(mu, cone, npoints, resultant, q == 0, nt, couple, kind);
+            nforce += point_columns(mu, cone, npoints, resultant, q == 0, nt, couple, kind) +
+                      (in->cohesion > 0.0 && isfinite(mu) ? 2 : 0);
     }
     double *fL = calloc((size_t)s->nrows, sizeof *fL);
     if (!fL || bl_system_allocate(s, nforce, npoints, 12 * (size_t)nforce + (size_t)s->nrows + 6)) {
@@ -158,9 +183,15 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
          * circumscribed 4-facet pyramid with n fixed */
         double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
         int capped = form == BL_FRICTION_FIXED && isfinite(in->mu);
+        /* cohesion: an equal share of the joint's area at every vertex */
+        double C = isfinite(in->mu) ? in->cohesion * in->area3 / in->np / s->W0 : 0.0;
         for (int q = 0; q < in->np; q++, point++) {
             int ncol = point_columns(mu, cone, point, resultant, q == 0, nt, couple, kind);
+            for (int e = 0; e < ncol; e++) bound[e] = INFINITY;
+            if (C > 0.0 && isfinite(mu))
+                ncol += cohesion_columns(cone, nt + ncol, couple + ncol, kind + ncol, bound + ncol, C);
             s->mu[point] = in->mu;
+            s->cohesion[point] = C;
             for (int e = 0; e < ncol; e++, c++) {
                 bl_vec3 fn = bl_v3_scale(in->n3, nt[e][0]);
                 bl_vec3 ft = bl_v3_add(bl_v3_scale(in->t2, nt[e][1]), bl_v3_scale(in->t3, nt[e][2]));
@@ -171,6 +202,10 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
                 s->colptr[c] = nz;
                 s->lo[c] = kind[e] == BL_COL_SHEAR && !capped ? -INFINITY : 0.0;
                 s->hi[c] = kind[e] == BL_COL_SHEAR && capped ? 0.0 : INFINITY;
+                if (kind[e] == BL_COL_COHESION) {
+                    s->lo[c] = -bound[e];
+                    s->hi[c] = bound[e];
+                }
                 s->col_point[c] = point;
                 s->col_kind[c] = (signed char)kind[e];
                 memcpy(s->col_nt + 3 * c, nt[e], sizeof nt[e]);

@@ -486,9 +486,9 @@ static int model_interface(lua_State *L)
     static const char *const fields[] = {"mu", "cohesion", "points", NULL};
     bl_model *m = check_model(L, 1);
     check_fields(L, 2, "interface", fields, 2);
-    if (m->dim == 3 && (field_given(L, 2, "points") || field_given(L, 2, "cohesion")))
-        return fail(L, "interface: in 3D models only 'mu' can be changed so far (joints by "
-                       "hand and cohesion are 2D)");
+    if (m->dim == 3 && field_given(L, 2, "points"))
+        return fail(L, "interface: joints by hand ('points') are 2D so far; in 3D models "
+                       "'mu' and 'cohesion' can be changed");
     bl_joint_spec s = {0};
     lua_geti(L, 2, 1);
     s.a = block_index(L, m, -1, "interface", "entry 1");

@@ -257,6 +257,25 @@ for _, cone in ipairs { { facets = 8 }, { facets = 4, kind = "circumscribed" } }
          ("W4 extruded, turned 0.7 rad about (1, 2, 3) with gravity and load, %d facets %s: alpha unchanged")
            :format(cone.facets, cone.kind or "inscribed"))
 end
+-- the same with cohesion (0.02 per unit area): the cohesion squares turn
+-- with the contact polygons too
+local function w4c(axis, angle)
+  model { dim = 3, mu = 0.65, cohesion = 0.02, gravity = rotate({ 0, 0, -1 }, axis, angle) }
+  for _, sb in ipairs(solids) do
+    local v = {}
+    for k, p in ipairs(sb.vertices) do v[k] = rotate(p, axis, angle) end
+    block { vertices = v, faces = sb.faces, support = sb.support }
+  end
+  load { live = "horizontal", direction = rotate({ 1, 0, 0 }, axis, angle) }
+  return solve { flow = "associative" }.alpha
+end
+local ac = w4c({ 0, 0, 1 }, 0)
+T.ok(ac > a0, ("W4 extruded with cohesion: alpha %.5f above %.5f without"):format(ac, a0))
+T.near(w4c({ 1, 2, 3 }, 0.7), ac, 1e-6, "W4 extruded with cohesion, turned about (1, 2, 3): alpha unchanged")
+model { mu = 0.65, cohesion = 0.02, thickness = 0.2 }
+wall { courses = walls.W4, unit = { 0.4, 0.175 } }
+T.near(ac, solve { flow = "associative" }.alpha, 1e-6,
+       "W4 extruded with cohesion: the 2D alpha of the wall 0.2 thick with the same cohesion")
 
 -- pure torque on one square contact of side a: four corner forces, each
 -- mu N / 4 at a / sqrt 2 from the centre, resist mu N a / sqrt 2 with the
@@ -336,7 +355,47 @@ box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
 box { size = { 1, 1, 1 } }
 interface { 1, 2, mu = 0.3 }
 T.near(solve {}.alpha, 0.3, 1e-9, "3D interface{ mu = 0.3 }: a cube now slides at 0.3")
-T.raises(function() interface { 1, 2, cohesion = 1 } end, "3D interface{ cohesion } is refused", "interface", "2D")
+T.raises(function() interface { 1, 2, points = { { 0, 0 }, { 1, 0 } } } end,
+         "3D interface{ points } is refused", "interface", "2D")
+
+-- cohesion in 3D: a flat box 2 x 2 x 0.5 (b/h = 4, it slides) on a slab,
+-- mu = 0.3, cohesion c = 0.05 per unit area over the 4 of its base: along
+-- a side of the contact square the capacity is mu W + c A, so alpha =
+-- mu + c A / W with every pyramid; along the diagonal the cohesion square
+-- gives c A / sqrt 2 inscribed and sqrt 2 c A circumscribed (the friction
+-- pyramid of 8 facets is exact there).
+for _, kind in ipairs { "inscribed", "circumscribed", "adaptive" } do
+  for _, dir in ipairs { { 1, 0 }, { 0, 1 }, { 1, 1 } } do
+    model { dim = 3, mu = 0.3, cohesion = 0.05 }
+    local b = box { size = { 2, 2, 0.5 } }
+    box { size = { 4, 4, 0.3 }, at = { 0, 0, -0.3 }, support = true }
+    load { live = "horizontal", direction = dir }
+    local cA_W = 0.05 * 4 / current():block_info(b).weight
+    local factor = 1
+    if dir[1] ~= 0 and dir[2] ~= 0 then factor = kind == "circumscribed" and math.sqrt(2) or math.sqrt(0.5) end
+    local r = solve { flow = "associative", cone = { kind = kind } }
+    T.near(r.alpha, 0.3 + factor * cA_W, 1e-8,
+           ("3D cohesion, %s pyramid, load {%d, %d}: alpha = mu + %.4f c A / W"):format(kind, dir[1], dir[2], factor))
+    T.ok(r.verified, "3D cohesion: verified")
+  end
+end
+model { dim = 3, mu = 0.3, cohesion = 0.05 }
+local cb = box { size = { 2, 2, 0.5 } }
+box { size = { 4, 4, 0.3 }, at = { 0, 0, -0.3 }, support = true }
+load { live = "horizontal" }
+local cW = current():block_info(cb).weight
+local cn = solve { flow = "nonassociative", progress = false }
+T.near(cn.alpha, 0.3 + 0.05 * 4 / cW, 1e-8, "3D cohesion, non-associative: alpha = mu + c A / W")
+T.ok(cn.verified, "3D cohesion, non-associative: certified")
+interface { 2, 1, cohesion = 0.1 }
+T.near(solve { flow = "associative" }.alpha, 0.3 + 0.1 * 4 / cW, 1e-8,
+       "3D interface{ cohesion = 0.1 }: alpha = mu + 0.1 A / W")
+model { dim = 3, mu = 0.3, cohesion = 0.05, interface = "resultant" }
+box { size = { 2, 2, 0.5 } }
+box { size = { 4, 4, 0.3 }, at = { 0, 0, -0.3 }, support = true }
+load { live = "horizontal" }
+T.raises(function() solve { flow = "associative" } end,
+         "3D cohesion with the resultant model is refused, naming the joint", "vertex model", "blocks")
 
 -- the resultant interface model: torsion mu_t N, by default mu times the
 -- joint's mean distance from its centroid, (sqrt 2 + ln(1 + sqrt 2)) / 6 a
