@@ -95,13 +95,47 @@ static int same_pair(const bl_interface *k, int a, int b)
     return (k->a == a && k->b == b) || (k->a == b && k->b == a);
 }
 
+/* A 3D joint declared by hand: its polygon, the normal from a into b (by
+ * the centroids), the frame along its first edge, and its area. */
+static int add_joint3(bl_model *m, const bl_joint_spec *s, bl_error *err)
+{
+    bl_interface k = {0};
+    k.a = s->a;
+    k.b = s->b;
+    k.np = s->npoints;
+    k.poly = malloc((size_t)k.np * sizeof *k.poly);
+    if (!k.poly) return bl_error_set(err, "interface: out of memory");
+    memcpy(k.poly, s->p3, (size_t)k.np * sizeof *k.poly);
+    bl_vec3 n = {0, 0, 0};
+    for (int i = 1; i + 1 < k.np; i++)
+        n = bl_v3_add(n, bl_v3_cross(bl_v3_sub(k.poly[i], k.poly[0]), bl_v3_sub(k.poly[i + 1], k.poly[0])));
+    k.area3 = 0.5 * bl_v3_norm(n);
+    k.n3 = bl_v3_scale(n, 0.5 / k.area3);
+    bl_vec3 ab = bl_v3_sub(m->blocks[s->b].centroid3, m->blocks[s->a].centroid3);
+    if (bl_v3_dot(k.n3, ab) < 0.0) k.n3 = bl_v3_scale(k.n3, -1.0);
+    bl_vec3 e = bl_v3_sub(k.poly[1], k.poly[0]);
+    k.t2 = bl_v3_scale(e, 1.0 / bl_v3_norm(e));
+    k.t3 = bl_v3_cross(k.n3, k.t2);
+    k.mu = s->has_mu ? s->mu : m->mu;
+    k.cohesion = s->has_cohesion ? s->cohesion : m->cohesion;
+    k.manual = 1;
+    if (bl_model_add_interface(m, &k, err)) {
+        free(k.poly);
+        return -1;
+    }
+    return 0;
+}
+
 static int apply_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
 {
-    if (s->npoints == 2) {
+    if (s->npoints > 0) {
         int n = 0;
-        for (int i = 0; i < m->ninterfaces; i++)
+        for (int i = 0; i < m->ninterfaces; i++) {
             if (!same_pair(&m->interfaces[i], s->a, s->b)) m->interfaces[n++] = m->interfaces[i];
+            else free(m->interfaces[i].poly);
+        }
         m->ninterfaces = n;
+        if (m->dim == 3) return add_joint3(m, s, err);
         bl_vec2 d = bl_v2_sub(s->p[1], s->p[0]);
         double len = bl_v2_norm(d);
         bl_interface k = {0};
@@ -128,8 +162,10 @@ static int apply_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
     if (!hit)
         return bl_error_set(err,
                             "interface: blocks %d and %d share no interface to change; "
-                            "give points = {{x1, y1}, {x2, y2}} to declare one",
-                            s->a + 1, s->b + 1);
+                            "give points = %s to declare one",
+                            s->a + 1, s->b + 1,
+                            m->dim == 3 ? "{{x1, y1, z1}, {x2, y2, z2}, {x3, y3, z3}, ...}"
+                                        : "{{x1, y1}, {x2, y2}}");
     return 0;
 }
 

@@ -486,9 +486,6 @@ static int model_interface(lua_State *L)
     static const char *const fields[] = {"mu", "cohesion", "points", NULL};
     bl_model *m = check_model(L, 1);
     check_fields(L, 2, "interface", fields, 2);
-    if (m->dim == 3 && field_given(L, 2, "points"))
-        return fail(L, "interface: joints by hand ('points') are 2D so far; in 3D models "
-                       "'mu' and 'cohesion' can be changed");
     bl_joint_spec s = {0};
     lua_geti(L, 2, 1);
     s.a = block_index(L, m, -1, "interface", "entry 1");
@@ -502,7 +499,30 @@ static int model_interface(lua_State *L)
     s.mu = number_field(L, 2, "interface", "mu", 0, NONNEG);
     s.has_cohesion = field(L, 2, "cohesion") ? (lua_pop(L, 1), 1) : 0;
     s.cohesion = number_field(L, 2, "interface", "cohesion", 0, NONNEG);
-    if (field(L, 2, "points")) {
+    if (m->dim == 3 && field(L, 2, "points")) {
+        int n = lua_istable(L, -1) ? (int)lua_rawlen(L, -1) : 0;
+        if (n < 3 || n > BL_JOINT_POINTS)
+            return fail(L, "interface: field 'points' must list 3 to %d points {x, y, z}, the "
+                           "corners of a convex polygon in order, got %s", BL_JOINT_POINTS,
+                        lua_istable(L, -1) ? lua_pushfstring(L, "%d", n) : luaL_typename(L, -1));
+        for (int i = 0; i < n; i++) {
+            char what[48];
+            snprintf(what, sizeof what, "field 'points' point %d", i + 1);
+            lua_geti(L, -1, i + 1);
+            s.p3[i] = to_point3(L, "interface", what);
+        }
+        lua_pop(L, 1);
+        double tol, gap, area;
+        bl_vec3 nrm;
+        bl_contact_tolerances(m, &tol, &gap);
+        int r = bl_polygon3_check(s.p3, n, tol, &nrm, &area);
+        if (r == -1) return fail(L, "interface: field 'points' encloses no area (on a line?)");
+        if (r == -2) return fail(L, "interface: field 'points' is not a convex polygon in order");
+        if (r < 0)
+            return fail(L, "interface: field 'points' point %d lies off the polygon's plane "
+                           "(by more than tol = %.3g)", -r - 1, tol);
+        s.npoints = n;
+    } else if (field(L, 2, "points")) {
         if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)
             return fail(L, "interface: field 'points' must be two points {{x1, y1}, {x2, y2}}");
         for (int i = 0; i < 2; i++) {

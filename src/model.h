@@ -51,14 +51,17 @@ typedef struct bl_interface {
 } bl_interface;
 
 /* A user setting for the interfaces between two blocks, kept across
- * re-detection: a friction or cohesion override, or (with npoints == 2) a
- * joint declared by hand that replaces the detected ones. */
+ * re-detection: a friction or cohesion override, or (with npoints > 0) a
+ * joint declared by hand that replaces the detected ones: in 2D its two
+ * ends p, in 3D a convex polygon p3 of npoints >= 3. */
+#define BL_JOINT_POINTS 16
 typedef struct bl_joint_spec {
     int a, b;
     int has_mu, has_cohesion;
     double mu, cohesion;
     int npoints;
     bl_vec2 p[2];
+    bl_vec3 p3[BL_JOINT_POINTS];
 } bl_joint_spec;
 
 typedef struct bl_point_load {

@@ -99,6 +99,36 @@ int bl_polyhedron_on_face(const bl_polyhedron *p, int k, bl_vec3 q, double tol)
     return inside;
 }
 
+int bl_polygon3_check(const bl_vec3 *p, int n, double tol, bl_vec3 *normal, double *area)
+{
+    /* the plane of the first corner that makes a triangle with p0 and p1 */
+    bl_vec3 nu = {0, 0, 0};
+    for (int k = 2; k < n && !(bl_v3_norm(nu) > tol * tol); k++)
+        nu = bl_v3_cross(bl_v3_sub(p[1], p[0]), bl_v3_sub(p[k], p[0]));
+    double len = bl_v3_norm(nu);
+    if (!(len > tol * tol)) return -1;
+    nu = bl_v3_scale(nu, 1.0 / len);
+    for (int i = 2; i < n; i++)
+        if (fabs(bl_v3_dot(nu, bl_v3_sub(p[i], p[0]))) > tol) return -(i + 2);
+    /* convex: every corner turns the same way (or goes straight on) */
+    int pos = 0, neg = 0;
+    for (int i = 0; i < n; i++) {
+        bl_vec3 e1 = bl_v3_sub(p[(i + 1) % n], p[i]), e2 = bl_v3_sub(p[(i + 2) % n], p[(i + 1) % n]);
+        double t = bl_v3_dot(bl_v3_cross(e1, e2), nu), eps = tol * (bl_v3_norm(e1) + bl_v3_norm(e2));
+        pos += t > eps;
+        neg += t < -eps;
+    }
+    if (pos && neg) return -2;
+    bl_vec3 s = {0, 0, 0};
+    for (int i = 1; i + 1 < n; i++)
+        s = bl_v3_add(s, bl_v3_cross(bl_v3_sub(p[i], p[0]), bl_v3_sub(p[i + 1], p[0])));
+    len = bl_v3_norm(s);
+    if (!(len > tol * tol)) return -1;
+    *normal = bl_v3_scale(s, 1.0 / len);
+    *area = 0.5 * len;
+    return 0;
+}
+
 static void reverse_face(bl_polyhedron *p, int k)
 {
     for (int i = p->fs[k], j = p->fs[k + 1] - 1; i < j; i++, j--) {

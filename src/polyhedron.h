@@ -59,6 +59,12 @@ bl_vec3 bl_polyhedron_face_normal(const bl_polyhedron *p, int k, double *area);
  * within tol of its boundary). */
 int bl_polyhedron_on_face(const bl_polyhedron *p, int k, bl_vec3 q, double tol);
 
+/* Checks a polygon of n points in space (in order, either way round):
+ * returns 0 with its unit normal (right hand along the order) and area;
+ * -1 when it has no area, -2 when it is not convex, or -(k + 1) when its
+ * point k (1-based) lies off its plane by more than tol. */
+int bl_polygon3_check(const bl_vec3 *p, int n, double tol, bl_vec3 *normal, double *area);
+
 /* Bounding box: box[0..5] = xmin, ymin, zmin, xmax, ymax, zmax. */
 void bl_polyhedron_bbox(const bl_polyhedron *p, double box[6]);
 

@@ -355,8 +355,36 @@ box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
 box { size = { 1, 1, 1 } }
 interface { 1, 2, mu = 0.3 }
 T.near(solve {}.alpha, 0.3, 1e-9, "3D interface{ mu = 0.3 }: a cube now slides at 0.3")
-T.raises(function() interface { 1, 2, points = { { 0, 0 }, { 1, 0 } } } end,
-         "3D interface{ points } is refused", "interface", "2D")
+
+-- a joint declared by hand in 3D: a cube of side 1 on a slab (mu = 2) rocks
+-- at alpha = b/h = 1; bearing on a centred square of side 0.5 instead, it
+-- rocks about that square's edge at 0.25 / 0.5 = 0.5, whichever way round
+-- the polygon is given
+model { dim = 3, mu = 2 }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 1 } }
+load { live = "horizontal" }
+T.near(solve { flow = "associative" }.alpha, 1, 1e-8, "a cube on its whole base: alpha = b/h = 1")
+local sq = { { -0.25, -0.25, 0 }, { 0.25, -0.25, 0 }, { 0.25, 0.25, 0 }, { -0.25, 0.25, 0 } }
+interface { 1, 2, points = sq }
+local hj = solve { flow = "associative" }
+T.near(hj.alpha, 0.5, 1e-8, "3D joint by hand, a centred square of side 0.5: alpha = 0.5")
+T.ok(hj.verified and #hj.interfaces == 1, "3D joint by hand: verified, and it replaced the detected joint")
+T.near(current():interface_info(1).area, 0.25, 1e-12, "3D joint by hand: its area")
+interface { 2, 1, points = { sq[4], sq[3], sq[2], sq[1] } }
+T.near(solve { flow = "associative" }.alpha, 0.5, 1e-8, "3D joint by hand, given the other way round: the same")
+T.near(solve { flow = "nonassociative", progress = false }.alpha, 0.5, 1e-8,
+       "3D joint by hand, non-associative: the same (it rocks)")
+for _, case in ipairs {
+  { { { 0, 0, 0 }, { 1, 0, 0 } }, "3 to 16 points" },
+  { { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } }, "no area" },
+  { { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0.3 } }, "point 4 lies off" },
+  { { { 0, 0, 0 }, { 1, 1, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, "not a convex polygon" },
+  { { { 0, 0, 0 }, { 1, 0 }, { 1, 1, 0 } }, "point 2 must be a point {x, y, z}" },
+} do
+  T.raises(function() interface { 1, 2, points = case[1] } end,
+           "3D joint by hand refused: " .. case[2], "interface: field 'points'", case[2])
+end
 
 -- cohesion in 3D: a flat box 2 x 2 x 0.5 (b/h = 4, it slides) on a slab,
 -- mu = 0.3, cohesion c = 0.05 per unit area over the 4 of its base: along
