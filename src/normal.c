@@ -53,7 +53,6 @@ typedef struct part {
     int *ft_src;            /* entry of Ft -> entry of F */
     int *row;               /* factor position -> row of the whole matrix */
     cholmod_factor *L;
-    cholmod_dense *X, *Y, *E; /* cholmod_solve2's result and workspace */
     double *b;              /* nrow: a right-hand side in the factor's order */
     double *T, *W, *z;      /* the separator's block of L (ns x ns), T T^T reversed, T w */
     double *u;              /* the rows of L's largest supernode */
@@ -68,7 +67,6 @@ struct bl_normal {
     int *srow;              /* the separator's rows, in the order of both domains */
     double *S;              /* ns x ns: L_SS L_SS^T, then L_SS */
     double *r;              /* ns */
-    double delta;
 };
 
 static void part_free(part *P)
@@ -77,9 +75,6 @@ static void part_free(part *P)
     cholmod_free_sparse(&P->F, &P->cm);
     cholmod_free_sparse(&P->Ft, &P->cm);
     cholmod_free_factor(&P->L, &P->cm);
-    cholmod_free_dense(&P->X, &P->cm);
-    cholmod_free_dense(&P->Y, &P->cm);
-    cholmod_free_dense(&P->E, &P->cm);
     cholmod_finish(&P->cm);
     free(P->col);
     free(P->ft_src);
@@ -344,8 +339,9 @@ double bl_normal_nnz(const bl_normal *N)
 
 double bl_normal_flops(const bl_normal *N)
 {
+    /* two domains: theirs, two T T^T (dlauum) and L_SS (dpotrf), s^3 / 3 each */
     double s = (double)N->ns;
-    return N->p[0].cm.fl + (N->nparts == 2 ? N->p[1].cm.fl + 2.0 * s * s * s + s * s * s / 3 : 0.0);
+    return N->p[0].cm.fl + (N->nparts == 2 ? N->p[1].cm.fl + s * s * s : 0.0);
 }
 
 static void part_fill(part *P, const bl_normal_pattern *A, const double *scale)
@@ -416,7 +412,6 @@ static void part_factor(part *P, double delta)
 int bl_normal_factor(bl_normal *N, double delta)
 {
     int np = N->nparts, ns = N->ns;
-    N->delta = delta;
     /* CHOLMOD's own OpenMP regions stay serial: nested in ours, or with no
      * active level at all (doc/performance.md, "Threads") */
     omp_set_max_active_levels(np > 1 ? 1 : 0);
@@ -487,7 +482,7 @@ static void ltsolve(const cholmod_factor *L, double *x, double *u)
 }
 
 /* Forward: [y; w] = L^-1 [rhs on the domain's rows; 0], z = T w. */
-static int forward(part *P, const double *rhs)
+static void forward(part *P, const double *rhs)
 {
     int ns = P->ns, off = P->nrow - ns, one = 1;
     for (int i = 0; i < off; i++) P->b[i] = rhs[P->row[i]];
@@ -495,18 +490,16 @@ static int forward(part *P, const double *rhs)
     lsolve(P->L, P->b, P->u);
     memcpy(P->z, P->b + off, (size_t)ns * sizeof *P->z);
     dtrmv_("L", "N", "N", &ns, P->T, &ns, P->z, &one);
-    return 0;
 }
 
 /* Backward: x = L^-T [y; T^T x_S], onto the domain's rows of rhs. */
-static int backward(part *P, const double *xs, double *rhs)
+static void backward(part *P, const double *xs, double *rhs)
 {
     int ns = P->ns, off = P->nrow - ns, one = 1;
     memcpy(P->b + off, xs, (size_t)ns * sizeof *P->b);
     dtrmv_("L", "T", "N", &ns, P->T, &ns, P->b + off, &one);
     ltsolve(P->L, P->b, P->u);
     for (int i = 0; i < off; i++) rhs[P->row[i]] = P->b[i];
-    return 0;
 }
 
 int bl_normal_solve(bl_normal *N, double *rhs)
@@ -520,15 +513,14 @@ int bl_normal_solve(bl_normal *N, double *rhs)
         for (int i = 0; i < P->nrow; i++) rhs[perm[i]] = P->b[i];
         return 0;
     }
-    int ns = N->ns, one = 1, info = 0, fail = 0;
-#pragma omp parallel for num_threads(2) schedule(static, 1) reduction(| : fail)
-    for (int k = 0; k < 2; k++) fail |= forward(&N->p[k], rhs) != 0;
-    if (fail) return -1;
+    int ns = N->ns, one = 1, info = 0;
+#pragma omp parallel for num_threads(2) schedule(static, 1)
+    for (int k = 0; k < 2; k++) forward(&N->p[k], rhs);
     for (int s = 0; s < ns; s++) N->r[s] = rhs[N->srow[s]] + N->p[0].z[s] + N->p[1].z[s];
     dpotrs_("L", &ns, &one, N->S, &ns, N->r, &ns, &info);
     if (info) return -1;
-#pragma omp parallel for num_threads(2) schedule(static, 1) reduction(| : fail)
-    for (int k = 0; k < 2; k++) fail |= backward(&N->p[k], N->r, rhs) != 0;
+#pragma omp parallel for num_threads(2) schedule(static, 1)
+    for (int k = 0; k < 2; k++) backward(&N->p[k], N->r, rhs);
     for (int s = 0; s < ns; s++) rhs[N->srow[s]] = N->r[s];
-    return fail ? -1 : 0;
+    return 0;
 }
