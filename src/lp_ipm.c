@@ -95,8 +95,6 @@ static void destroy(void *e)
  * analysis of the normal matrix, and the work arrays. */
 static int build(ipm *p, bl_error *err)
 {
-    bl_normal_free(p->N);
-    p->N = NULL;
     p->border = -1;
     for (int j = 0; j < p->nu; j++)
         if (isinf(p->lo[j]) && isinf(p->hi[j]) && p->obj[j] != 0.0) p->border = j;
@@ -105,8 +103,10 @@ static int build(ipm *p, bl_error *err)
         if (j == p->border || p->lo[j] == p->hi[j]) continue;
         n += isinf(p->lo[j]) && isinf(p->hi[j]) ? 2 : 1;
     }
+    /* the same internal columns as before (a bound moved, as in a sequence
+     * of LPs): the normal matrix keeps its analysis */
+    int *old_map = p->map, old_n = p->n;
     p->n = n;
-    free(p->map);
     free(p->sign);
     free(p->kind);
     free(p->U);
@@ -116,8 +116,7 @@ static int build(ipm *p, bl_error *err)
     p->kind = xcalloc((size_t)n, sizeof *p->kind);
     p->U = xcalloc((size_t)n, sizeof *p->U);
     p->c = xcalloc((size_t)n, sizeof *p->c);
-    if (!p->map || !p->sign || !p->kind || !p->U || !p->c)
-        return bl_error_set(err, "lp: out of memory building the interior-point problem");
+    if (!p->map || !p->sign || !p->kind || !p->U || !p->c) goto oom;
 
     /* b = rhs - sum of the constant parts; g = the border column */
     memcpy(p->b, p->rhs, (size_t)p->m * sizeof *p->b);
@@ -161,11 +160,26 @@ static int build(ipm *p, bl_error *err)
         *arr[i] = NULL;
         if (i >= 11 && nbox == 0) continue;
         *arr[i] = xcalloc(nn, sizeof(double));
-        if (!*arr[i]) return bl_error_set(err, "lp: out of memory");
+        if (!*arr[i]) goto oom;
     }
+    if (p->N && old_map && old_n == n && !memcmp(old_map, p->map, (size_t)n * sizeof *p->map)) {
+        free(p->map); /* the analysis holds the old one, equal */
+        p->map = old_map;
+        return 0;
+    }
+    free(old_map);
+    bl_normal_free(p->N);
+    p->N = NULL;
     bl_normal_pattern pat = {p->m, n, p->ucp, p->uri, p->map, p->uval};
+    double t0 = bl_clock();
     p->N = bl_normal_analyse(&pat, p->threads, p->set.verbose, err);
+    if (p->set.verbose) fprintf(stderr, "ipm: analysis %.3f s\n", bl_clock() - t0);
     return p->N ? 0 : -1;
+oom: /* solve() reports the failure: no analysis */
+    free(old_map);
+    bl_normal_free(p->N);
+    p->N = NULL;
+    return bl_error_set(err, "lp: out of memory building the interior-point problem");
 }
 
 static void *create(const bl_lp_problem *pr, const bl_lp_settings *s, bl_error *err)
