@@ -326,11 +326,13 @@ static int factor(ipm *p, double *delta)
     return r == 0 ? 0 : -1;
 }
 
-/* Solves M out = rhs in place (m). */
-static int msolve(ipm *p, double *rhs)
+/* Solves M out = rhs in place (m), and M v = g as well when v is given
+ * (one pass through the factor for both). */
+static int msolve(ipm *p, double *rhs, double *v)
 {
-    double t0 = bl_clock();
-    int r = bl_normal_solve(p->N, rhs);
+    double t0 = bl_clock(), *two[2] = {rhs, v};
+    if (v) memcpy(v, p->g, (size_t)p->m * sizeof *v);
+    int r = bl_normal_solve(p->N, two, v ? 2 : 1);
     p->solves++;
     p->solve_time += bl_clock() - t0;
     return r;
@@ -355,8 +357,10 @@ static void complete(ipm *p, step *d, int full)
 /* One Newton direction into d for the complementarity targets xz (n) and
  * sw (n, boxed columns).  With full = 1 it also removes the residuals rp,
  * rd, ru and ra; with full = 0 it is a pure centrality correction.
- * v = M^-1 g and gv = g.v must be current.  Returns 0 or -1. */
-static int direction(ipm *p, step *d, int full, double ra, double gv)
+ * v = M^-1 g and *gv = g.v must be current, or with new_v = 1 they are
+ * computed here, in the same solve (the first direction after a
+ * factorization).  Returns 0 or -1. */
+static int direction(ipm *p, step *d, int full, double ra, double *gv, int new_v)
 {
     int n = p->n, m = p->m;
     PAR_FOR
@@ -369,8 +373,9 @@ static int direction(ipm *p, step *d, int full, double ra, double gv)
     mul_A(p, d->x, d->y);
     if (full)
         for (int i = 0; i < m; i++) d->y[i] += p->rp[i];
-    if (msolve(p, d->y)) return -1;
-    d->a = gv != 0.0 ? (dot(p->g, d->y, m) - (full ? ra : 0.0)) / gv : 0.0;
+    if (msolve(p, d->y, new_v ? p->v : NULL)) return -1;
+    if (new_v) *gv = dot(p->g, p->v, m);
+    d->a = *gv != 0.0 ? (dot(p->g, d->y, m) - (full ? ra : 0.0)) / *gv : 0.0;
     for (int i = 0; i < m; i++) d->y[i] -= p->v[i] * d->a;
     mul_At(p, d->y, d->x);
     PAR_FOR
@@ -397,7 +402,7 @@ static int refine(ipm *p, step *d, double gv)
             rn = fmax(rn, fabs(p->rp[i]));
         }
         if (en <= 1e-14 * (1.0 + rn)) break;
-        if (msolve(p, p->tmp)) return -1;
+        if (msolve(p, p->tmp, NULL)) return -1;
         double da = gv != 0.0 ? dot(p->g, p->tmp, m) / gv : 0.0;
         for (int i = 0; i < m; i++) {
             p->tmp[i] -= p->v[i] * da;
@@ -445,7 +450,7 @@ static int starting_point(ipm *p)
     for (int j = 0; j < n; j++) p->theta[j] = 1.0;
     if (factor(p, &delta)) return -1;
     memcpy(p->tmp, p->b, (size_t)m * sizeof *p->tmp);
-    if (msolve(p, p->tmp)) return -1;
+    if (msolve(p, p->tmp, NULL)) return -1;
     mul_At(p, p->tmp, p->x);
     double gg = dot(p->g, p->g, m);
     for (int i = 0; i < m; i++) p->y[i] = gg > 0.0 ? p->ca * p->g[i] / gg : 0.0;
@@ -607,9 +612,7 @@ static bl_lp_status solve(void *e)
         }
         double delta;
         if (factor(p, &delta)) { status = BL_LP_FAILED; break; }
-        memcpy(p->v, p->g, (size_t)m * sizeof *p->v);
-        if (msolve(p, p->v)) { status = BL_LP_FAILED; break; }
-        double gv = dot(p->g, p->v, m);
+        double gv = 0.0;
 
         /* predictor: the affine-scaling direction */
         step *d = &p->dir;
@@ -618,7 +621,7 @@ static bl_lp_status solve(void *e)
             p->xz[j] = -p->x[j] * p->z[j];
             if (p->sw) p->sw[j] = p->kind[j] == COL_BOXED ? -p->s[j] * p->w[j] : 0.0;
         }
-        if (direction(p, d, 1, ra, gv)) { status = BL_LP_FAILED; break; }
+        if (direction(p, d, 1, ra, &gv, 1)) { status = BL_LP_FAILED; break; }
         double tp = max_step(p, p->x, d->x, p->s, d->s);
         double td = max_step(p, p->z, d->z, p->w, d->w);
         double mu_aff = 0.0;
@@ -640,7 +643,7 @@ static bl_lp_status solve(void *e)
                                ? sigma * mu - p->s[j] * p->w[j] - d->s[j] * d->w[j]
                                : 0.0;
         }
-        if (direction(p, d, 1, ra, gv)) { status = BL_LP_FAILED; break; }
+        if (direction(p, d, 1, ra, &gv, 0)) { status = BL_LP_FAILED; break; }
         tp = max_step(p, p->x, d->x, p->s, d->s);
         td = max_step(p, p->z, d->z, p->w, d->w);
 
@@ -666,7 +669,7 @@ static bl_lp_status solve(void *e)
                 }
             }
             step *c = &p->cor;
-            if (direction(p, c, 0, 0.0, gv)) break;
+            if (direction(p, c, 0, 0.0, &gv, 0)) break;
             PAR_FOR
             for (int j = 0; j < n; j++) {
                 c->x[j] += d->x[j];

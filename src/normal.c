@@ -125,7 +125,7 @@ static int part_build(part *P, const bl_normal_pattern *A, const int *loc, const
     P->F = cholmod_allocate_sparse((size_t)nrow, (size_t)ncols, nnz, 0, 1, 0, CHOLMOD_REAL, &P->cm);
     P->col = malloc((size_t)(ncols ? ncols : 1) * sizeof *P->col);
     P->row = malloc((size_t)nrow * sizeof *P->row);
-    P->b = malloc((size_t)nrow * sizeof *P->b);
+    P->b = malloc(2 * (size_t)nrow * sizeof *P->b);
     if (!P->F || !P->col || !P->row || !P->b) return -1;
     int *Fp = P->F->p, *Fi = P->F->i, q = 0;
     for (int c = 0; c < ncols; c++) {
@@ -171,13 +171,13 @@ static int part_build(part *P, const bl_normal_pattern *A, const int *loc, const
     int umax = 1;
     for (size_t s = 0; s < P->L->nsuper; s++)
         if (pi[s + 1] - pi[s] > umax) umax = pi[s + 1] - pi[s];
-    P->u = malloc((size_t)umax * sizeof *P->u);
+    P->u = malloc(2 * (size_t)umax * sizeof *P->u);
     if (!P->u) return -1;
     if (ns > 0) {
         size_t ss = (size_t)ns * (size_t)ns;
         P->T = malloc(ss * sizeof *P->T);
         P->W = malloc(ss * sizeof *P->W);
-        P->z = malloc((size_t)ns * sizeof *P->z);
+        P->z = malloc(2 * (size_t)ns * sizeof *P->z);
         if (!P->T || !P->W || !P->z) return -1;
     }
     return 0;
@@ -230,7 +230,7 @@ static int split(bl_normal *N)
     N->ns = (int)ns;
     N->srow = malloc((size_t)ns * sizeof *N->srow);
     N->S = malloc((size_t)ns * (size_t)ns * sizeof *N->S);
-    N->r = malloc((size_t)ns * sizeof *N->r);
+    N->r = malloc(2 * (size_t)ns * sizeof *N->r);
     if (!N->srow || !N->S || !N->r) goto done;
     for (int i = 0, s = 0; i < m; i++)
         if (side[i] == 2) N->srow[s++] = i;
@@ -438,89 +438,136 @@ int bl_normal_factor(bl_normal *N, double delta)
     return info == 0 ? 0 : info > 0 ? 1 : -1;
 }
 
-/* x = L^-1 x over the supernodes of L, in the factor's order, with the
- * supernode's rows gathered into u (L's largest supernode).  By hand
- * rather than through cholmod_solve2: its many small BLAS calls serialize
- * on OpenBLAS's buffer lock when the two domains solve at once (each domain
- * took 1.8 ms instead of 1.0 ms at 10,050 blocks). */
-static void lsolve(const cholmod_factor *L, double *x, double *u)
+/* x = L^-1 x over the supernodes of L, in the factor's order, for nrhs
+ * (1 or 2) vectors of length ld one after the other: each supernode's rows
+ * gathered into u (nrhs times L's largest supernode) and its block of L
+ * read once for both.  By hand rather than through cholmod_solve2: its
+ * many small BLAS calls serialize on OpenBLAS's buffer lock when the two
+ * domains solve at once (each domain took 1.8 ms instead of 1.0 ms at
+ * 10,050 blocks). */
+static void lsolve(const cholmod_factor *L, double *x, double *u, int nrhs, size_t ld)
 {
     const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
     for (size_t s = 0; s < L->nsuper; s++) {
         int k1 = super[s], nc = super[s + 1] - k1, nr = pi[s + 1] - pi[s];
         const int *rows = Ls + pi[s];
         const double *a = (const double *)L->x + px[s];
-        memcpy(u, x + k1, (size_t)nc * sizeof *u);
-        memset(u + nc, 0, (size_t)(nr - nc) * sizeof *u);
-        for (int j = 0; j < nc; j++, a += nr) {
-            double v = u[j] /= a[j];
-#pragma omp simd
-            for (int i = j + 1; i < nr; i++) u[i] -= a[i] * v;
+        double *u0 = u, *u1 = u + nr;
+        for (int r = 0; r < nrhs; r++) {
+            memcpy(u + r * nr, x + r * ld + k1, (size_t)nc * sizeof *u);
+            memset(u + r * nr + nc, 0, (size_t)(nr - nc) * sizeof *u);
         }
-        memcpy(x + k1, u, (size_t)nc * sizeof *u);
-        for (int i = nc; i < nr; i++) x[rows[i]] += u[i];
+        for (int j = 0; j < nc; j++, a += nr) {
+            double v0 = u0[j] /= a[j];
+            if (nrhs == 1) {
+#pragma omp simd
+                for (int i = j + 1; i < nr; i++) u0[i] -= a[i] * v0;
+            } else {
+                double v1 = u1[j] /= a[j];
+#pragma omp simd
+                for (int i = j + 1; i < nr; i++) {
+                    u0[i] -= a[i] * v0;
+                    u1[i] -= a[i] * v1;
+                }
+            }
+        }
+        for (int r = 0; r < nrhs; r++) {
+            double *xr = x + r * ld, *ur = u + r * nr;
+            memcpy(xr + k1, ur, (size_t)nc * sizeof *u);
+            for (int i = nc; i < nr; i++) xr[rows[i]] += ur[i];
+        }
     }
 }
 
 /* x = L^-T x, the same way backwards. */
-static void ltsolve(const cholmod_factor *L, double *x, double *u)
+static void ltsolve(const cholmod_factor *L, double *x, double *u, int nrhs, size_t ld)
 {
     const int *super = L->super, *pi = L->pi, *px = L->px, *Ls = L->s;
     for (size_t s = L->nsuper; s-- > 0;) {
         int k1 = super[s], nc = super[s + 1] - k1, nr = pi[s + 1] - pi[s];
         const int *rows = Ls + pi[s];
-        for (int i = 0; i < nr; i++) u[i] = x[rows[i]];
+        double *u0 = u, *u1 = u + nr;
+        for (int r = 0; r < nrhs; r++)
+            for (int i = 0; i < nr; i++) u[r * nr + i] = x[r * ld + (size_t)rows[i]];
         for (int j = nc - 1; j >= 0; j--) {
             const double *a = (const double *)L->x + px[s] + (size_t)j * (size_t)nr;
-            double v = 0.0;
-#pragma omp simd reduction(+ : v)
-            for (int i = j + 1; i < nr; i++) v += a[i] * u[i];
-            u[j] = (u[j] - v) / a[j];
+            double v0 = 0.0, v1 = 0.0;
+            if (nrhs == 1) {
+#pragma omp simd reduction(+ : v0)
+                for (int i = j + 1; i < nr; i++) v0 += a[i] * u0[i];
+            } else {
+#pragma omp simd reduction(+ : v0, v1)
+                for (int i = j + 1; i < nr; i++) {
+                    v0 += a[i] * u0[i];
+                    v1 += a[i] * u1[i];
+                }
+                u1[j] = (u1[j] - v1) / a[j];
+            }
+            u0[j] = (u0[j] - v0) / a[j];
         }
-        memcpy(x + k1, u, (size_t)nc * sizeof *u);
+        for (int r = 0; r < nrhs; r++) memcpy(x + r * ld + k1, u + r * nr, (size_t)nc * sizeof *u);
     }
 }
 
-/* Forward: [y; w] = L^-1 [rhs on the domain's rows; 0], z = T w. */
-static void forward(part *P, const double *rhs)
+/* Forward: [y; w] = L^-1 [rhs on the domain's rows; 0], z = T w, for each
+ * of the nrhs right-hand sides. */
+static void forward(part *P, double *const *rhs, int nrhs)
 {
     int ns = P->ns, off = P->nrow - ns, one = 1;
-    for (int i = 0; i < off; i++) P->b[i] = rhs[P->row[i]];
-    memset(P->b + off, 0, (size_t)ns * sizeof *P->b);
-    lsolve(P->L, P->b, P->u);
-    memcpy(P->z, P->b + off, (size_t)ns * sizeof *P->z);
-    dtrmv_("L", "N", "N", &ns, P->T, &ns, P->z, &one);
+    size_t ld = (size_t)P->nrow;
+    for (int r = 0; r < nrhs; r++) {
+        double *b = P->b + r * ld;
+        for (int i = 0; i < off; i++) b[i] = rhs[r][P->row[i]];
+        memset(b + off, 0, (size_t)ns * sizeof *b);
+    }
+    lsolve(P->L, P->b, P->u, nrhs, ld);
+    for (int r = 0; r < nrhs; r++) {
+        double *z = P->z + r * ns;
+        memcpy(z, P->b + r * ld + off, (size_t)ns * sizeof *z);
+        dtrmv_("L", "N", "N", &ns, P->T, &ns, z, &one);
+    }
 }
 
 /* Backward: x = L^-T [y; T^T x_S], onto the domain's rows of rhs. */
-static void backward(part *P, const double *xs, double *rhs)
+static void backward(part *P, const double *xs, double *const *rhs, int nrhs)
 {
     int ns = P->ns, off = P->nrow - ns, one = 1;
-    memcpy(P->b + off, xs, (size_t)ns * sizeof *P->b);
-    dtrmv_("L", "T", "N", &ns, P->T, &ns, P->b + off, &one);
-    ltsolve(P->L, P->b, P->u);
-    for (int i = 0; i < off; i++) rhs[P->row[i]] = P->b[i];
+    size_t ld = (size_t)P->nrow;
+    for (int r = 0; r < nrhs; r++) {
+        double *b = P->b + r * ld + off;
+        memcpy(b, xs + r * ns, (size_t)ns * sizeof *b);
+        dtrmv_("L", "T", "N", &ns, P->T, &ns, b, &one);
+    }
+    ltsolve(P->L, P->b, P->u, nrhs, ld);
+    for (int r = 0; r < nrhs; r++)
+        for (int i = 0; i < off; i++) rhs[r][P->row[i]] = P->b[r * ld + i];
 }
 
-int bl_normal_solve(bl_normal *N, double *rhs)
+int bl_normal_solve(bl_normal *N, double *const *rhs, int nrhs)
 {
     if (N->nparts == 1) {
         part *P = &N->p[0];
         const int *perm = P->L->Perm;
-        for (int i = 0; i < P->nrow; i++) P->b[i] = rhs[perm[i]];
-        lsolve(P->L, P->b, P->u);
-        ltsolve(P->L, P->b, P->u);
-        for (int i = 0; i < P->nrow; i++) rhs[perm[i]] = P->b[i];
+        size_t ld = (size_t)P->nrow;
+        for (int r = 0; r < nrhs; r++)
+            for (int i = 0; i < P->nrow; i++) P->b[r * ld + i] = rhs[r][perm[i]];
+        lsolve(P->L, P->b, P->u, nrhs, ld);
+        ltsolve(P->L, P->b, P->u, nrhs, ld);
+        for (int r = 0; r < nrhs; r++)
+            for (int i = 0; i < P->nrow; i++) rhs[r][perm[i]] = P->b[r * ld + i];
         return 0;
     }
-    int ns = N->ns, one = 1, info = 0;
+    int ns = N->ns, info = 0;
 #pragma omp parallel for num_threads(2) schedule(static, 1)
-    for (int k = 0; k < 2; k++) forward(&N->p[k], rhs);
-    for (int s = 0; s < ns; s++) N->r[s] = rhs[N->srow[s]] + N->p[0].z[s] + N->p[1].z[s];
-    dpotrs_("L", &ns, &one, N->S, &ns, N->r, &ns, &info);
+    for (int k = 0; k < 2; k++) forward(&N->p[k], rhs, nrhs);
+    for (int r = 0; r < nrhs; r++)
+        for (int s = 0; s < ns; s++)
+            N->r[r * ns + s] = rhs[r][N->srow[s]] + N->p[0].z[r * ns + s] + N->p[1].z[r * ns + s];
+    dpotrs_("L", &ns, &nrhs, N->S, &ns, N->r, &ns, &info);
     if (info) return -1;
 #pragma omp parallel for num_threads(2) schedule(static, 1)
-    for (int k = 0; k < 2; k++) backward(&N->p[k], N->r, rhs);
-    for (int s = 0; s < ns; s++) rhs[N->srow[s]] = N->r[s];
+    for (int k = 0; k < 2; k++) backward(&N->p[k], N->r, rhs, nrhs);
+    for (int r = 0; r < nrhs; r++)
+        for (int s = 0; s < ns; s++) rhs[r][N->srow[s]] = N->r[r * ns + s];
     return 0;
 }

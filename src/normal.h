@@ -35,8 +35,9 @@ double bl_normal_fill(bl_normal *N, const double *scale);
  * delta), -1 on failure. */
 int bl_normal_factor(bl_normal *N, double delta);
 
-/* Solves M x = rhs in place (m); 0 or -1. */
-int bl_normal_solve(bl_normal *N, double *rhs);
+/* Solves M x = rhs[r] in place (m each) for nrhs = 1 or 2 right-hand
+ * sides, reading the factor once for both; 0 or -1. */
+int bl_normal_solve(bl_normal *N, double *const *rhs, int nrhs);
 
 /* 2 when the matrix was split into two domains, else 1. */
 int bl_normal_domains(const bl_normal *N);
