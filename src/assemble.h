@@ -90,6 +90,12 @@ void bl_system_mechanism3(const bl_system *s, const bl_model *m, const double *y
  * the scaled units of y. */
 void bl_system_slip3(const bl_system *s, const bl_model *m, const double *y, double *slip);
 
+/* For a 3D BL_FRICTION_FIXED system: the tangential relative velocity of
+ * every contact point along t2 (dt) and t3 (dt3) from the powers w of its
+ * shear columns (bl_system_point_motion): w_k = d_k . slip over the
+ * columns' tangential directions d_k, solved in the least-squares sense. */
+void bl_system_tangent3(const bl_system *s, const double *w, double *dt, double *dt3);
+
 /* For a BL_FRICTION_FIXED system: the bounds of every column when the
  * contact points carry the normal forces n (per point, scaled by W0):
  * R = mu n + C on the shear columns.  lo and hi have ncols entries. */

@@ -50,9 +50,13 @@ static int point_columns(double mu, const bl_cone *cone, int point, int resultan
     for (int e = 0; e < k + added; e++) {
         double th = e < k ? 2.0 * M_PI * e / k + shift : cone->extra[point * cone->nextra + e - k];
         for (int rep = 0; rep < (resultant ? 2 : 1); rep++, n++) {
+            /* an edge along t2 or t3 has an exact zero: a cos(pi/2) of
+             * 6e-17 left in made CLP's scaling call a feasible
+             * certificate infeasible */
+            double ct = cos(th), st = sin(th);
             nt[n][0] = 1.0;
-            nt[n][1] = r * cos(th);
-            nt[n][2] = r * sin(th);
+            nt[n][1] = fabs(ct) < 1e-15 ? 0.0 : r * ct;
+            nt[n][2] = fabs(st) < 1e-15 ? 0.0 : r * st;
             couple[n] = resultant ? (rep ? 1.0 : -1.0) : 0.0;
             kind[n] = BL_COL_PYRAMID;
         }
@@ -60,27 +64,51 @@ static int point_columns(double mu, const bl_cone *cone, int point, int resultan
     return n;
 }
 
-/* The cohesion columns at a contact point: a tangential force within a
- * square of "radius" C added to the pyramid (the yield surface
- * |t| <= mu n + C with the disk |t| <= C approximated): inscribed, the
- * square with its corners on t2 and t3 (|c2| + |c3| <= C, two columns along
- * the diagonals bounded by C / sqrt 2), or circumscribed, its sides across
- * t2 and t3 (two columns along them bounded by C).  Returns 2. */
+/* The cohesion columns at a contact point: a tangential force within the
+ * polygon of the pyramid's shape (its n-section) of "radius" C added to
+ * the pyramid, so that the point's yield set is |t| <= mu n + C with both
+ * disks approximated alike.  The polygon, centrally symmetric, is the sum
+ * of m segments: m = k/2 for a pyramid of k facets (k even), m = k for an
+ * odd k (a 2k-gon).  Inscribed (corners on the disk, one on t2): segments
+ * along psi_j = pi/(2m) + j pi/m of half-length C sin(pi/(2m));
+ * circumscribed (sides touching it, one across t2): along j pi/m, half
+ * length C tan(pi/(2m)).  Returns m. */
 static int cohesion_columns(const bl_cone *cone, double nt[][3], double *couple,
                             bl_column_kind *kind, double *bound, double C)
 {
-    double h = cone->circumscribed ? 1.0 : sqrt(0.5);
-    double d[2][2] = {{h, h}, {h, -h}};
-    if (cone->circumscribed) d[0][1] = d[1][0] = 0.0, d[1][1] = 1.0;
-    for (int i = 0; i < 2; i++) {
-        nt[i][0] = 0.0;
-        nt[i][1] = d[i][0];
-        nt[i][2] = d[i][1];
-        couple[i] = 0.0;
-        kind[i] = BL_COL_COHESION;
-        bound[i] = cone->circumscribed ? C : C * sqrt(0.5);
+    int k = cone->facets, m = k % 2 ? k : k / 2;
+    double half = M_PI / (2.0 * m), shift = cone->circumscribed ? 0.0 : half;
+    double a = cone->circumscribed ? C * tan(half) : C * sin(half);
+    for (int j = 0; j < m; j++) {
+        double psi = shift + j * M_PI / m, c = cos(psi), s = sin(psi);
+        nt[j][0] = 0.0;
+        nt[j][1] = fabs(c) < 1e-15 ? 0.0 : c;
+        nt[j][2] = fabs(s) < 1e-15 ? 0.0 : s;
+        couple[j] = 0.0;
+        kind[j] = BL_COL_COHESION;
+        bound[j] = a;
     }
-    return 2;
+    return m;
+}
+
+/* The fixed form's columns at a point that can slide: the normal, and four
+ * shears along phi_k = pi/8 + k pi/4 of length sin(pi/8), each bounded by
+ * +-R = mu n + C (bl_system_fixed_bounds).  Their sum is a zonotope, the
+ * regular octagon of circumradius R with its corners on +-t2, +-t3 and the
+ * diagonals: the n-section of the 8-facet inscribed pyramid, as a set of
+ * box bounds.  Returns 5. */
+static int octagon_columns(double nt[][3], double *couple, bl_column_kind *kind)
+{
+    double h = sin(M_PI / 8.0);
+    for (int k = 0; k < 5; k++) {
+        double phi = M_PI / 8.0 + (k - 1) * M_PI / 4.0;
+        nt[k][0] = k ? 0.0 : 1.0;
+        nt[k][1] = k ? h * cos(phi) : 0.0;
+        nt[k][2] = k ? h * sin(phi) : 0.0;
+        couple[k] = 0.0;
+        kind[k] = k ? BL_COL_SHEAR : BL_COL_NORMAL;
+    }
+    return 5;
 }
 
 /* The torsion lever of a convex contact polygon: the mean distance of its
@@ -156,9 +184,13 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
             return NULL;
         }
         double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
+        int capped = form == BL_FRICTION_FIXED && isfinite(in->mu);
         for (int q = 0; q < in->np; q++, npoints++)
-            nforce += point_columns(mu, cone, npoints, resultant, q == 0, nt, couple, kind) +
-                      (in->cohesion > 0.0 && isfinite(mu) ? 2 : 0);
+            nforce += capped ? octagon_columns(nt, couple, kind)
+                             : point_columns(mu, cone, npoints, resultant, q == 0, nt, couple, kind) +
+                                   (in->cohesion > 0.0 && isfinite(mu)
+                                        ? (cone->facets % 2 ? cone->facets : cone->facets / 2)
+                                        : 0);
     }
     double *fL = calloc((size_t)s->nrows, sizeof *fL);
     if (!fL || bl_system_allocate(s, nforce, npoints, 12 * (size_t)nforce + (size_t)s->nrows + 6)) {
@@ -178,15 +210,16 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
             double lever = torsion_lever(in, &cen);
             mut = m->mu_t > 0.0 ? m->mu_t : (isfinite(in->mu) ? in->mu : 0.0) * lever;
         }
-        /* the fixed form: a normal and two shears at every point, the
-         * shears bounded by +-mu n (bl_system_fixed_bounds), which is the
-         * circumscribed 4-facet pyramid with n fixed */
+        /* the fixed form: a normal and the octagon's four shears at every
+         * point that can slide, a normal and two free shears where it
+         * cannot */
         double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
         int capped = form == BL_FRICTION_FIXED && isfinite(in->mu);
         /* cohesion: an equal share of the joint's area at every vertex */
         double C = isfinite(in->mu) ? in->cohesion * in->area3 / in->np / s->W0 : 0.0;
         for (int q = 0; q < in->np; q++, point++) {
-            int ncol = point_columns(mu, cone, point, resultant, q == 0, nt, couple, kind);
+            int ncol = capped ? octagon_columns(nt, couple, kind)
+                              : point_columns(mu, cone, point, resultant, q == 0, nt, couple, kind);
             for (int e = 0; e < ncol; e++) bound[e] = INFINITY;
             if (C > 0.0 && isfinite(mu))
                 ncol += cohesion_columns(cone, nt + ncol, couple + ncol, kind + ncol, bound + ncol, C);
@@ -270,6 +303,28 @@ oom:
     bl_system_free(s);
     bl_error_set(err, "solve: out of memory assembling the equilibrium system");
     return NULL;
+}
+
+void bl_system_tangent3(const bl_system *s, const double *w, double *dt, double *dt3)
+{
+    double *G = calloc(5 * (size_t)s->npoints + 1, sizeof *G); /* g11 g12 g22 h1 h2 */
+    if (!G) return;
+    for (int j = 0; j < s->nforce; j++) {
+        if (s->col_kind[j] != BL_COL_SHEAR) continue;
+        double *g = G + 5 * s->col_point[j], a = s->col_nt[3 * j + 1], b = s->col_nt[3 * j + 2];
+        g[0] += a * a;
+        g[1] += a * b;
+        g[2] += b * b;
+        g[3] += a * w[j];
+        g[4] += b * w[j];
+    }
+    for (int p = 0; p < s->npoints; p++) {
+        const double *g = G + 5 * p;
+        double det = g[0] * g[2] - g[1] * g[1];
+        dt[p] = det > 0.0 ? (g[2] * g[3] - g[1] * g[4]) / det : 0.0;
+        dt3[p] = det > 0.0 ? (g[0] * g[4] - g[1] * g[3]) / det : 0.0;
+    }
+    free(G);
 }
 
 void bl_system_forces3(const bl_system *s, const double *x, double *force)

@@ -27,6 +27,7 @@ typedef struct run {
     bl_system *cone, *fixed;
     bl_lp *lp_fixed, *lp_cone;
     double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt, *dt3; /* dt3: 3D, along t3 */
+    double *resist; /* 3D: per point, the most a pyramid edge resists the slip */
     double t0;             /* when the run began */
     int iterations;        /* of the random-state LPs */
     int shown;             /* a progress line is on the screen */
@@ -49,18 +50,20 @@ static void run_free(run *r)
     free(r->dn);
     free(r->dt);
     free(r->dt3);
+    free(r->resist);
     free(r->obj);
     free(r->best_x);
     free(r->best_y);
 }
 
-/* The systems of the run: in 3D the cone is the circumscribed 4-facet
- * pyramid, the one the fixed form's box bounds |t2|, |t3| <= mu n match. */
+/* The systems of the run: in 3D the cone is the 8-facet inscribed
+ * pyramid, whose n-section is the fixed form's octagon of shears. */
+static const bl_cone OCTAGON = {.facets = 8};
+
 static bl_system *build(const bl_model *m, bl_friction_form form, bl_error *err)
 {
     if (m->dim != 3) return bl_system_build(m, form, err);
-    bl_cone square = {.facets = 4, .circumscribed = 1};
-    return bl_system_build3(m, &square, form, err);
+    return bl_system_build3(m, &OCTAGON, form, err);
 }
 
 /* The relative velocity of every contact point from the mechanism y:
@@ -69,13 +72,7 @@ static void point_motion(run *r, const double *y)
 {
     const bl_system *f = r->fixed;
     bl_system_point_motion(f, y, r->w, r->dn, r->dt);
-    if (f->dim != 3) return;
-    for (int j = 0; j < f->nforce; j++)
-        if (f->col_kind[j] == BL_COL_SHEAR) {
-            int p = f->col_point[j];
-            if (f->col_nt[3 * j + 1] != 0.0) r->dt[p] = r->w[j];
-            else r->dt3[p] = r->w[j];
-        }
+    if (f->dim == 3) bl_system_tangent3(f, r->w, r->dt, r->dt3);
 }
 
 /* The certificate: at alpha, forces in Coulomb's cone that fit the
@@ -91,19 +88,33 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
     for (int p = 0; p < f->npoints; p++)
         V = fmax(V, hypot(r->dn[p], hypot(r->dt[p], c->dim == 3 ? r->dt3[p] : 0.0)));
     double eps = slip * V;
+    /* 3D: per point, the largest resistance of a pyramid edge to the slip,
+     * -(its tangential part . slip) per unit normal force */
+    double *best = c->dim == 3 ? r->resist : NULL;
+    for (int p = 0; best && p < c->npoints; p++) best[p] = -INFINITY;
+    for (int j = 0; best && j < c->nforce; j++)
+        if (c->col_kind[j] == BL_COL_PYRAMID) {
+            int p = c->col_point[j];
+            const double *nt = c->col_nt + 3 * j;
+            best[p] = fmax(best[p], -(nt[1] * r->dt[p] + nt[2] * r->dt3[p]));
+        }
     for (int j = 0; j < c->nforce; j++) {
         int p = c->col_point[j];
         double lo = c->lo[j], hi = c->hi[j];
         if (r->dn[p] > eps) {
             lo = hi = 0.0; /* opening: no force */
         } else if (c->dim == 3) {
-            /* 3D, the square pyramid: friction on the corner (or side)
-             * against each component of the slip that is not zero */
+            /* 3D, sliding: friction only on the pyramid's edges (the
+             * octagon's corner, or side) that resist the slip most, and
+             * cohesion at its bounds against the slip */
             const double *nt = c->col_nt + 3 * j;
-            if (c->col_kind[j] == BL_COL_PYRAMID &&
-                ((fabs(r->dt[p]) > eps && nt[1] * r->dt[p] > 0.0) ||
-                 (fabs(r->dt3[p]) > eps && nt[2] * r->dt3[p] > 0.0)))
-                lo = hi = 0.0;
+            double along = nt[1] * r->dt[p] + nt[2] * r->dt3[p];
+            if (hypot(r->dt[p], r->dt3[p]) > eps) {
+                if (c->col_kind[j] == BL_COL_PYRAMID && -along < best[p] - 1e-9 * hypot(r->dt[p], r->dt3[p]))
+                    lo = hi = 0.0;
+                if (c->col_kind[j] == BL_COL_COHESION && fabs(along) > 1e-9 * hypot(r->dt[p], r->dt3[p]))
+                    lo = hi = along > 0.0 ? c->lo[j] : c->hi[j];
+            }
         } else if (fabs(r->dt[p]) > eps) {
             /* sliding: friction opposes the slip of b on a */
             int up = r->dt[p] > 0.0;
@@ -313,9 +324,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
 {
     double t0 = bl_clock();
     bl_solution *s;
-    /* (3D: the associative start on the sequence's own square pyramid) */
+    /* (3D: the associative start on the sequence's own pyramid) */
     bl_solve_options base = o->base;
-    if (m->dim == 3) base.cone = (bl_cone){.facets = 4, .circumscribed = 1};
+    if (m->dim == 3) base.cone = OCTAGON;
     if (bl_assoc_solve(m, &base, &s, err)) return -1;
     /* Only joints with finite, non-zero friction dilate: without any, the
      * associative answer is the non-associative one.  Without an
@@ -349,6 +360,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.dn = calloc((size_t)np + 1, sizeof *r.dn);
     r.dt = calloc((size_t)np + 1, sizeof *r.dt);
     r.dt3 = calloc((size_t)np + 1, sizeof *r.dt3);
+    r.resist = calloc((size_t)np + 1, sizeof *r.resist);
     r.lo = malloc((size_t)nc * sizeof *r.lo);
     r.hi = malloc((size_t)nc * sizeof *r.hi);
     r.clo = malloc((size_t)ncc * sizeof *r.clo);
@@ -357,7 +369,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.w = malloc((size_t)(nc > ncc ? nc : ncc) * sizeof *r.w);
     r.best_x = malloc((size_t)ncc * sizeof *r.best_x);
     r.best_y = malloc((size_t)r.fixed->nrows * sizeof *r.best_y);
-    if (!r.n || !r.dn || !r.dt || !r.dt3 || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
+    if (!r.n || !r.dn || !r.dt || !r.dt3 || !r.resist || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
         !r.best_x || !r.best_y) {
         bl_error_set(err, "solve: out of memory");
         goto fail;

@@ -109,11 +109,25 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
 
     /* kinematics, per contact point */
     bl_system_point_motion(fixed, y, w, dn, dt);
-    for (int j = 0; d3 && j < fixed->nforce; j++)
-        if (fixed->col_kind[j] == BL_COL_SHEAR) {
-            int p = fixed->col_point[j];
-            if (fixed->col_nt[3 * j + 1] != 0.0) dt[p] = w[j];
-            else dt3[p] = w[j];
+    if (d3) bl_system_tangent3(fixed, w, dt, dt3);
+    /* 3D: the friction's dissipation at every point, n times the most a
+     * pyramid edge resists the slip per unit normal force, plus each
+     * cohesion column's bound times the slip along it (the support
+     * function of the point's yield set) */
+    double *h = d3 ? w : NULL; /* w is free again: one entry per point */
+    for (int p = 0; h && p < np; p++) h[p] = -INFINITY;
+    for (int j = 0; h && j < cone->nforce; j++)
+        if (cone->col_kind[j] == BL_COL_PYRAMID) {
+            int p = cone->col_point[j];
+            const double *nt = cone->col_nt + 3 * j;
+            h[p] = fmax(h[p], -(nt[1] * dt[p] + nt[2] * dt3[p]));
+        }
+    for (int p = 0; h && p < np; p++) h[p] = isfinite(h[p]) ? fmax(h[p], 0.0) * n[p] : 0.0;
+    for (int j = 0; h && j < cone->nforce; j++)
+        if (cone->col_kind[j] == BL_COL_COHESION) {
+            int p = cone->col_point[j];
+            const double *nt = cone->col_nt + 3 * j;
+            h[p] += cone->hi[j] * fabs(nt[1] * dt[p] + nt[2] * dt3[p]);
         }
     double V = 0.0, X = 0.0;
     for (int p = 0; p < np; p++) {
@@ -127,10 +141,12 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         double R = isinf(cone->mu[p]) ? 0.0 : cone->mu[p] * n[p] + cone->cohesion[p];
         adm = fmax(adm, -dn[p] / V);
         comp = fmax(comp, fabs(n[p] * dn[p]) / (X * V));
-        if (isfinite(cone->mu[p])) {
+        if (isfinite(cone->mu[p]) && d3) {
+            flow = fmax(flow, fabs(t[p] * dt[p] + t3[p] * dt3[p] + h[p]) / (X * V));
+            dissipation += h[p];
+        } else if (isfinite(cone->mu[p])) {
             flow = fmax(flow, fabs(t[p] * dt[p] + R * fabs(dt[p])) / (X * V));
-            flow = fmax(flow, fabs(t3[p] * dt3[p] + R * fabs(dt3[p])) / (X * V));
-            dissipation += R * (fabs(dt[p]) + fabs(dt3[p]));
+            dissipation += R * fabs(dt[p]);
         }
         if (hypot(dt[p], dt3[p]) > slip * V && n[p] > slip * X) dil = fmax(dil, dn[p] / V);
     }

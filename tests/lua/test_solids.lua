@@ -387,23 +387,30 @@ for _, case in ipairs {
 end
 
 -- cohesion in 3D: a flat box 2 x 2 x 0.5 (b/h = 4, it slides) on a slab,
--- mu = 0.3, cohesion c = 0.05 per unit area over the 4 of its base: along
--- a side of the contact square the capacity is mu W + c A, so alpha =
--- mu + c A / W with every pyramid; along the diagonal the cohesion square
--- gives c A / sqrt 2 inscribed and sqrt 2 c A circumscribed (the friction
--- pyramid of 8 facets is exact there).
+-- mu = 0.3, cohesion c = 0.05 per unit area over the 4 of its base.  The
+-- cohesion polygon has the pyramid's shape (8 facets: an octagon with a
+-- corner, inscribed, or a side, circumscribed, along t2, t3 and the
+-- diagonals), so along 0 and 45 degrees alpha = mu + c A / W exactly, and
+-- along 22.5 degrees both terms scale by cos(pi/8) (inscribed) or
+-- 1 / cos(pi/8) (circumscribed); the adaptive cone makes the friction
+-- exact and keeps the inscribed cohesion octagon.
+local cos8 = math.cos(math.pi / 8)
 for _, kind in ipairs { "inscribed", "circumscribed", "adaptive" } do
-  for _, dir in ipairs { { 1, 0 }, { 0, 1 }, { 1, 1 } } do
+  for _, deg in ipairs { 0, 90, 45, 22.5 } do
     model { dim = 3, mu = 0.3, cohesion = 0.05 }
     local b = box { size = { 2, 2, 0.5 } }
     box { size = { 4, 4, 0.3 }, at = { 0, 0, -0.3 }, support = true }
-    load { live = "horizontal", direction = dir }
+    local th = math.rad(deg)
+    load { live = "horizontal", direction = { math.cos(th), math.sin(th) } }
     local cA_W = 0.05 * 4 / current():block_info(b).weight
-    local factor = 1
-    if dir[1] ~= 0 and dir[2] ~= 0 then factor = kind == "circumscribed" and math.sqrt(2) or math.sqrt(0.5) end
+    local fm, fc = 1, 1
+    if deg == 22.5 then
+      fm = kind == "inscribed" and cos8 or kind == "circumscribed" and 1 / cos8 or 1
+      fc = kind == "circumscribed" and 1 / cos8 or cos8
+    end
     local r = solve { flow = "associative", cone = { kind = kind } }
-    T.near(r.alpha, 0.3 + factor * cA_W, 1e-8,
-           ("3D cohesion, %s pyramid, load {%d, %d}: alpha = mu + %.4f c A / W"):format(kind, dir[1], dir[2], factor))
+    T.near(r.alpha, fm * 0.3 + fc * cA_W, 1e-8,
+           ("3D cohesion, %s pyramid, load at %g degrees: alpha = %.4f mu + %.4f c A / W"):format(kind, deg, fm, fc))
     T.ok(r.verified, "3D cohesion: verified")
   end
 end
@@ -484,8 +491,9 @@ T.ok(current():block_info(fbase).support and contacts {} > 0, "facade{}: a fixed
 T.raises(function() model { interface = "resultant" } end, "the interface model is refused in 2D",
          "model", "'interface'")
 
--- the non-associative flow in 3D (the sequence of LPs on the square
--- pyramid): the closed forms, and never above the associative answer
+-- the non-associative flow in 3D (the sequence of LPs on the octagon of the
+-- 8-facet inscribed pyramid): the closed forms, and never above the
+-- associative answer
 for _, case in ipairs { { 0.5, 1, 0.3 }, { 0.5, 1, 0.8 }, { 0.4, 0.3, 0.5 } } do
   local b, h, mu = case[1], case[2], case[3]
   model { dim = 3, mu = mu }
@@ -496,10 +504,25 @@ for _, case in ipairs { { 0.5, 1, 0.3 }, { 0.5, 1, 0.8 }, { 0.4, 0.3, 0.5 } } do
        ("3D box %g x %g x %g, mu = %g, non-associative: min(mu, b/h), certified"):format(b, 2 * b, h, mu),
        ("%.10f"):format(r.alpha))
 end
+-- a cube sliding (mu = 0.3) at angle theta to t2: the octagon's extent
+-- there, mu cos(pi/8) / cos(theta - pi/8) for theta in [0, pi/4], the
+-- associative answer on the same pyramid
+for _, deg in ipairs { 0, 22.5, 30, 45 } do
+  model { dim = 3, mu = 0.3 }
+  box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+  box { size = { 1, 1, 1 } }
+  local th = math.rad(deg)
+  load { live = "horizontal", direction = { math.cos(th), math.sin(th) } }
+  local r = solve { flow = "nonassociative" }
+  local exact = 0.3 * math.cos(math.pi / 8) / math.cos(th - math.pi / 8)
+  T.ok(r.certified and r.verified and math.abs(r.alpha - exact) <= 1e-8 * exact,
+       ("3D cube sliding at %g degrees, non-associative: mu cos(pi/8)/cos(theta - pi/8), certified"):format(deg),
+       ("%.10f vs %.10f"):format(r.alpha, exact))
+end
 model { dim = 3, mu = 0.65 }
 wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
 local n3 = solve { flow = "nonassociative" }
-local a3 = solve { cone = { facets = 4, kind = "circumscribed" } }
+local a3 = solve { flow = "associative" }
 T.ok(n3.certified and n3.verified and n3.alpha <= a3.alpha * (1 + 1e-9),
      "W4 extruded, non-associative: certified, verified, not above the associative alpha",
      ("%.6f vs %.6f"):format(n3.alpha, a3.alpha))
