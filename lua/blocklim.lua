@@ -62,7 +62,8 @@ return function(core)
   -- The names the program puts into _G (a script that requires the module
   -- from a stock Lua may do the same: require("blocklim").globals()).
   local exported = { "model", "block", "contacts", "interface", "load", "solve",
-                     "stats", "wall", "arch", "current", "last", "compare", "box", "extrude", "dome", "facade" }
+                     "stats", "wall", "arch", "current", "last", "compare", "box", "extrude", "dome", "facade",
+                     "corner", "pier" }
   function M.globals(env)
     env = env or _G
     for _, n in ipairs(exported) do env[n] = M[n] end

@@ -17,6 +17,16 @@
 --   alternate courses (the facade runs through the corners in the first,
 --   the returns in the next), c courses H high, on a fixed base slab.
 --   Returns the block numbers and the base.
+-- corner{ lengths = {n1, n2}, courses = c, unit = {L, H}, density }: two
+--   panels half a block (L/2) thick meeting at a corner at the origin, one
+--   n1 blocks long along +x, the other n2 blocks along +y, interlocked in
+--   alternate courses (the x panel runs through the corner in the first,
+--   the y panel in the next, with half-block closers), c courses H high,
+--   on a fixed base slab.  Returns the block numbers and the base.
+-- pier{ size = {a, b}, courses = c, height = H, density }: a pier a wide
+--   (x) and b deep (y) of c courses H high, two blocks to a course, split
+--   across x in one course and across y in the next, on a fixed base slab.
+--   Returns the block numbers and the base.
 return function(M)
   -- level: 3 blames the caller of box or extrude when they call fail
   -- themselves; their helpers pass 4
@@ -150,6 +160,70 @@ return function(M)
       end
     end
     local base = M.box { size = { W + 2 * th, D + 2 * th, H }, at = { W / 2, D / 2, -H }, support = true }
+    return blocks, base
+  end
+
+  local function positive_integer(fn, t, k, min)
+    if math.type(t[k]) ~= "integer" or t[k] < (min or 1) then
+      fail(fn, ("field '%s' must be an integer of at least %d, got %s"):format(k, min or 1,
+           tostring(t[k])), 4)
+    end
+    return t[k]
+  end
+
+  function M.corner(t)
+    check("corner", t, { lengths = true, courses = true, unit = true, density = true })
+    local n = number_list("corner", t, "lengths", 2, true)
+    for i = 1, 2 do
+      if math.type(n[i]) ~= "integer" or n[i] < 2 then
+        fail("corner", ("field 'lengths' entry %d must be an integer of at least 2 blocks, got %s")
+          :format(i, tostring(n[i])))
+      end
+    end
+    local courses = positive_integer("corner", t, "courses")
+    local u = number_list("corner", t, "unit", 2, true)
+    local L, H, th = u[1], u[2], u[1] / 2
+    local blocks, rho = {}, t.density
+    local function put(size, at) blocks[#blocks + 1] = M.box { size = size, at = at, density = rho } end
+    for c = 0, courses - 1 do
+      local z = c * H
+      if c % 2 == 0 then -- the x panel runs through the corner
+        for k = 0, n[1] - 1 do put({ L, th, H }, { (k + 0.5) * L, th / 2, z }) end
+        for k = 0, n[2] - 1 do put({ th, L, H }, { th / 2, th + (k + 0.5) * L, z }) end
+      else -- the y panel runs through, closers at both ends
+        for k = 0, n[2] - 1 do put({ th, L, H }, { th / 2, (k + 0.5) * L, z }) end
+        put({ th, th, H }, { th / 2, n[2] * L + th / 2, z })
+        for k = 0, n[1] - 2 do put({ L, th, H }, { th + (k + 0.5) * L, th / 2, z }) end
+        put({ th, th, H }, { n[1] * L - th / 2, th / 2, z })
+      end
+    end
+    local X, Y = n[1] * L, n[2] * L + th
+    local base = M.box { size = { X + 2 * th, Y + 2 * th, H }, at = { X / 2, Y / 2, -H }, support = true }
+    return blocks, base
+  end
+
+  function M.pier(t)
+    check("pier", t, { size = true, courses = true, height = true, density = true })
+    local sz = number_list("pier", t, "size", 2, true)
+    local courses = positive_integer("pier", t, "courses")
+    local H = t.height
+    if type(H) ~= "number" or not (H > 0) or H == math.huge then
+      fail("pier", ("field 'height' must be a positive number, got %s"):format(tostring(H)))
+    end
+    local a, b = sz[1], sz[2]
+    local blocks, rho = {}, t.density
+    for c = 0, courses - 1 do
+      for side = -1, 1, 2 do
+        local size, at
+        if c % 2 == 0 then -- split across x: two blocks a/2 wide
+          size, at = { a / 2, b, H }, { side * a / 4, 0, c * H }
+        else -- split across y: two blocks b/2 deep
+          size, at = { a, b / 2, H }, { 0, side * b / 4, c * H }
+        end
+        blocks[#blocks + 1] = M.box { size = size, at = at, density = rho }
+      end
+    end
+    local base = M.box { size = { 2 * a, 2 * b, H }, at = { 0, 0, -H }, support = true }
     return blocks, base
   end
 

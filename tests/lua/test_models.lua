@@ -10,7 +10,7 @@ local expected = {
   w4_3d = 0.33195, w5_3d = 0.23964, -- one block thick, loaded in their plane
 }
 local results = {}
-for _, name in ipairs { "w1", "w4", "w5", "block", "arch", "facade", "vault", "dome", "w4_3d", "w5_3d" } do
+for _, name in ipairs { "w1", "w4", "w5", "block", "arch", "facade", "vault", "dome", "w4_3d", "w5_3d", "corner" } do
   local png = ("%s/blocklim_model_%s.png"):format(tmp, name)
   os.remove(png)
   arg = { [0] = dir .. "models/" .. name .. ".lua", png }
@@ -32,6 +32,8 @@ local f3 = results.facade
 T.ok(f3.alpha >= 0.2 / 1.6, "facade: the return walls help (alpha >= t/h = 0.125)", tostring(f3.alpha))
 T.near(results.vault.alpha, results.arch.alpha, 1e-6, "vault: every ring acts as the 2D arch (same alpha)")
 T.ok(results.dome.cone.kind == "adaptive" and results.dome.cone.rounds > 1, "dome: solved with the adaptive cone")
+T.ok(results.corner.alpha >= 0.2 / 1.6, "corner: the return panel helps (alpha >= t/h = 0.125)",
+     tostring(results.corner.alpha))
 T.near(results.w4_3d.alpha, results.w4.alpha, 1e-6, "W4 in 3D: the 2D wall's alpha to 1e-6")
 T.near(results.w5_3d.alpha, results.w5.alpha, 1e-6, "W5 in 3D: the 2D wall's alpha to 1e-6")
 T.done()

@@ -530,6 +530,35 @@ T.raises(function() solve { method = "mpec" } end, "3D: method mpec is refused",
 T.raises(function() solve { cone = { facets = 2 } } end, "3D: a pyramid of 2 facets is refused",
          "facets", "3 to 64")
 
+-- pier{}: two blocks to a course, the joints crossing from course to
+-- course; with ample friction the whole pier rocks, alpha = a / h
+model { dim = 3, mu = 2 }
+local pb = pier { size = { 0.6, 0.6 }, courses = 8, height = 0.3 }
+load { live = "horizontal" }
+T.eq(#pb, 16, "pier{}: two blocks to each of 8 courses")
+local pr = solve { flow = "associative" }
+T.near(pr.alpha, 0.6 / 2.4, 1e-7, "pier 0.6 wide, 2.4 high: alpha = a / h")
+T.ok(pr.verified, "pier: verified")
+T.raises(function() pier { size = { 0.6, 0.6 }, courses = 0, height = 0.3 } end,
+         "pier{ courses = 0 } is refused", "pier: field 'courses'")
+
+-- corner{}: n1 + n2 blocks in the courses where the x panel runs through,
+-- n1 + n2 + 1 (two closers) in the others; the volume is the two panels',
+-- c H (L/2) L (n1 + n2); pushed out of its plane the x panel is held by
+-- the other: never weaker than standing alone (t/h = 0.2 / 1.6)
+model { dim = 3, mu = 0.65 }
+local cb = corner { lengths = { 6, 4 }, courses = 8, unit = { 0.4, 0.2 } }
+T.eq(#cb, 4 * 10 + 4 * 11, "corner{}: 84 blocks in 8 interlocked courses")
+local cvol = 0
+for _, b in ipairs(cb) do cvol = cvol + current():block_info(b).volume end
+T.near(cvol, 8 * 0.2 * 0.2 * 0.4 * 10, 1e-12, "corner{}: the two panels' volume")
+load { live = "horizontal", direction = { 0, -1 } }
+local cr = solve { flow = "associative" }
+T.ok(cr.verified and cr.alpha >= 0.2 / 1.6, "corner pushed out of the x panel's plane: verified, alpha >= t/h",
+     tostring(cr.alpha))
+T.raises(function() corner { lengths = { 1, 4 }, courses = 2, unit = { 0.4, 0.2 } } end,
+         "corner{ lengths = {1, 4} } is refused", "corner: field 'lengths' entry 1")
+
 model {}
 T.raises(function() block { points = cube } end, "points in a 2D model are refused", "block", "3D")
 T.raises(function() box { size = { 1, 1, 1 } } end, "box in a 2D model is refused", "box", "dim = 3")
