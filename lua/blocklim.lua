@@ -63,7 +63,7 @@ return function(core)
   -- from a stock Lua may do the same: require("blocklim").globals()).
   local exported = { "model", "block", "contacts", "interface", "load", "solve",
                      "stats", "wall", "arch", "current", "last", "compare", "box", "extrude", "dome", "facade",
-                     "corner", "pier" }
+                     "corner", "pier", "bond" }
   function M.globals(env)
     env = env or _G
     for _, n in ipairs(exported) do env[n] = M[n] end

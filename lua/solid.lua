@@ -27,6 +27,18 @@
 --   (x) and b deep (y) of c courses H high, two blocks to a course, split
 --   across x in one course and across y in the next, on a fixed base slab.
 --   Returns the block numbers and the base.
+-- bond{ length = n, courses = c, unit = {L, H}, pattern = "english",
+--   openings = { {x0, x1, c0, c1}, ... }, density }: a wall one brick (L)
+--   thick and n bricks (n L) long along x from the origin, c courses H high,
+--   of bricks L x L/2 laid as stretchers (along x) or headers (across):
+--   "english", stretcher and header courses in turn (a header course with
+--   quarter-brick closers at its ends); "header", header courses only,
+--   every other one with the closers; "stretcher", two leaves of stretchers
+--   in running bond and no header (a collar joint between them).  An
+--   opening removes what lies between x0 L and x1 L in courses c0 to c1
+--   (1 = the lowest), cutting the bricks at its jambs; the course above
+--   spans it as it is.  On a fixed base slab.  Returns the block numbers
+--   and the base.
 return function(M)
   -- level: 3 blames the caller of box or extrude when they call fail
   -- themselves; their helpers pass 4
@@ -224,6 +236,85 @@ return function(M)
       end
     end
     local base = M.box { size = { 2 * a, 2 * b, H }, at = { 0, 0, -H }, support = true }
+    return blocks, base
+  end
+
+  function M.bond(t)
+    check("bond", t, { length = true, courses = true, unit = true, pattern = true, openings = true,
+                       density = true })
+    local n, courses = positive_integer("bond", t, "length", 2), positive_integer("bond", t, "courses")
+    local u = number_list("bond", t, "unit", 2, true)
+    local L, H = u[1], u[2]
+    local pattern = t.pattern or "english"
+    if pattern ~= "english" and pattern ~= "header" and pattern ~= "stretcher" then
+      fail("bond", ("field 'pattern' must be \"english\", \"header\" or \"stretcher\", got %s")
+        :format(tostring(pattern)))
+    end
+    local openings = t.openings or {}
+    if type(openings) ~= "table" then fail("bond", "field 'openings' must be a list of {x0, x1, c0, c1}") end
+    for i, o in ipairs(openings) do
+      if type(o) ~= "table" or #o ~= 4 then
+        fail("bond", ("field 'openings' entry %d must be {x0, x1, c0, c1}"):format(i))
+      end
+      for j = 1, 4 do
+        if type(o[j]) ~= "number" then
+          fail("bond", ("field 'openings' entry %d must be {x0, x1, c0, c1} of numbers"):format(i))
+        end
+      end
+      if not (o[1] < o[2] and o[3] <= o[4] and o[1] >= 0 and o[2] <= n) then
+        fail("bond", ("field 'openings' entry %d must have 0 <= x0 < x1 <= length and c0 <= c1"):format(i))
+      end
+    end
+    -- a course as pieces {x0, x1, y0, y1} in units of L, then cut by the
+    -- openings that reach it
+    local function course(c)
+      local pieces = {}
+      local function run(x, widths, y0, y1)
+        for _, w in ipairs(widths) do
+          pieces[#pieces + 1] = { x, x + w, y0, y1 }
+          x = x + w
+        end
+      end
+      local header = pattern == "header" or (pattern == "english" and c % 2 == 0)
+      if header then
+        local w = {}
+        local closers = pattern == "english" or c % 2 == 0
+        if closers then w[1] = 0.25 end
+        for _ = 1, closers and 2 * n - 1 or 2 * n do w[#w + 1] = 0.5 end
+        if closers then w[#w + 1] = 0.25 end
+        run(0, w, 0, 1)
+      else -- two leaves of stretchers, running bond from course to course
+        local w = {}
+        if pattern == "stretcher" and c % 2 == 0 then w[1] = 0.5 end
+        for _ = 1, (pattern == "stretcher" and c % 2 == 0) and n - 1 or n do w[#w + 1] = 1 end
+        if pattern == "stretcher" and c % 2 == 0 then w[#w + 1] = 0.5 end
+        run(0, w, 0, 0.5)
+        run(0, w, 0.5, 1)
+      end
+      for _, o in ipairs(openings) do
+        if c >= o[3] and c <= o[4] then
+          local cut = {}
+          for _, p in ipairs(pieces) do
+            if p[2] <= o[1] or p[1] >= o[2] then cut[#cut + 1] = p
+            else
+              if p[1] < o[1] then cut[#cut + 1] = { p[1], o[1], p[3], p[4] } end
+              if p[2] > o[2] then cut[#cut + 1] = { o[2], p[2], p[3], p[4] } end
+            end
+          end
+          pieces = cut
+        end
+      end
+      return pieces
+    end
+    local blocks = {}
+    for c = 1, courses do
+      for _, p in ipairs(course(c)) do
+        blocks[#blocks + 1] = M.box { size = { (p[2] - p[1]) * L, (p[4] - p[3]) * L, H },
+                                      at = { (p[1] + p[2]) / 2 * L, (p[3] + p[4]) / 2 * L, (c - 1) * H },
+                                      density = t.density }
+      end
+    end
+    local base = M.box { size = { (n + 1) * L, 2 * L, H }, at = { n * L / 2, L / 2, -H }, support = true }
     return blocks, base
   end
 

@@ -559,6 +559,36 @@ T.ok(cr.verified and cr.alpha >= 0.2 / 1.6, "corner pushed out of the x panel's 
 T.raises(function() corner { lengths = { 1, 4 }, courses = 2, unit = { 0.4, 0.2 } } end,
          "corner{ lengths = {1, 4} } is refused", "corner: field 'lengths' entry 1")
 
+-- bond{}: a wall one brick (0.4) thick, 1.0 high, pushed out of its plane:
+-- rocking as one piece is a mechanism whatever the bond, so alpha <= t/h;
+-- all headers make it one piece, alpha = t/h; english bond: 12 stretchers
+-- in each stretcher course (two leaves), 11 headers and 2 closers in each
+-- header course
+local pats = {}
+for _, pat in ipairs { "english", "header", "stretcher" } do
+  model { dim = 3, mu = 0.65 }
+  local bb = bond { length = 6, courses = 10, unit = { 0.4, 0.1 }, pattern = pat }
+  load { live = "horizontal", direction = { 0, 1 } }
+  local r = solve { flow = "associative" }
+  pats[pat] = { n = #bb, alpha = r.alpha, verified = r.verified }
+end
+T.eq(pats.english.n, 5 * 12 + 5 * 13, "bond{ english }: 125 bricks in 10 courses")
+T.near(pats.header.alpha, 0.4, 1e-7, "bond{ header }, out of plane: alpha = t/h = 0.4")
+T.ok(pats.english.alpha <= 0.4 * (1 + 1e-9) and pats.stretcher.alpha <= 0.4 * (1 + 1e-9)
+     and pats.english.verified and pats.stretcher.verified,
+     "bond{ english } and { stretcher }, out of plane: verified, alpha <= t/h",
+     ("%.5f, %.5f"):format(pats.english.alpha, pats.stretcher.alpha))
+model { dim = 3, mu = 0.65 }
+local ob = bond { length = 6, courses = 10, unit = { 0.4, 0.1 }, openings = { { 2, 4, 3, 7 } } }
+local ovol = 0
+for _, k in ipairs(ob) do ovol = ovol + current():block_info(k).volume end
+T.near(ovol, 6 * 0.4 * 0.4 * 1.0 - 2 * 0.4 * 0.4 * 0.5, 1e-12,
+       "bond{} with an opening 0.8 wide through 5 courses: the wall's volume less the opening's")
+T.raises(function() bond { length = 6, courses = 2, unit = { 0.4, 0.1 }, pattern = "flemish" } end,
+         "bond{ pattern = \"flemish\" } is refused", "bond: field 'pattern'")
+T.raises(function() bond { length = 6, courses = 2, unit = { 0.4, 0.1 }, openings = { { 5, 7, 1, 1 } } } end,
+         "bond{} with an opening past its end is refused", "bond: field 'openings' entry 1")
+
 model {}
 T.raises(function() block { points = cube } end, "points in a 2D model are refused", "block", "3D")
 T.raises(function() box { size = { 1, 1, 1 } } end, "box in a 2D model is refused", "box", "dim = 3")
