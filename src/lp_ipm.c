@@ -44,7 +44,7 @@ typedef struct step {
 
 typedef struct ipm {
     bl_lp_settings set;
-    /* the user's problem (copied) */
+    /* the user's problem: bounds, right-hand side and objective copied */
     int m, nu;
     const int *ucp, *uri;   /* the matrix, by reference (lp.h) */
     const double *uval;
@@ -151,16 +151,18 @@ static int build(ipm *p, bl_error *err)
     int nbox = 0;
     for (int k = 0; k < n; k++) nbox += p->kind[k] == COL_BOXED;
     size_t nn = (size_t)n;
-    double **arr[] = {&p->x,     &p->z,     &p->theta, &p->rd,    &p->rhat,  &p->xz,
-                      &p->dir.x, &p->dir.z, &p->cor.x, &p->cor.z, &p->ntmp,  &p->s,
-                      &p->w,     &p->sw,    &p->ru,    &p->dir.s, &p->dir.w, &p->cor.s,
-                      &p->cor.w};
-    for (size_t i = 0; i < sizeof arr / sizeof *arr; i++) {
-        free(*arr[i]);
-        *arr[i] = NULL;
-        if (i >= 11 && nbox == 0) continue;
-        *arr[i] = xcalloc(nn, sizeof(double));
-        if (!*arr[i]) goto oom;
+    double **always[] = {&p->x,     &p->z,     &p->theta, &p->rd,    &p->rhat, &p->xz,
+                         &p->dir.x, &p->dir.z, &p->cor.x, &p->cor.z, &p->ntmp};
+    double **boxed[] = {&p->s,     &p->w,     &p->sw,    &p->ru,
+                        &p->dir.s, &p->dir.w, &p->cor.s, &p->cor.w};
+    for (size_t i = 0; i < sizeof always / sizeof *always; i++) {
+        free(*always[i]);
+        if (!(*always[i] = xcalloc(nn, sizeof(double)))) goto oom;
+    }
+    for (size_t i = 0; i < sizeof boxed / sizeof *boxed; i++) {
+        free(*boxed[i]);
+        *boxed[i] = nbox ? xcalloc(nn, sizeof(double)) : NULL;
+        if (nbox && !*boxed[i]) goto oom;
     }
     if (p->N && old_map && old_n == n && !memcmp(old_map, p->map, (size_t)n * sizeof *p->map)) {
         free(p->map); /* the analysis holds the old one, equal */
