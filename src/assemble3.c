@@ -91,24 +91,28 @@ static int cohesion_columns(const bl_cone *cone, double nt[][3], double *couple,
     return m;
 }
 
-/* The fixed form's columns at a point that can slide: the normal, and four
- * shears along phi_k = pi/8 + k pi/4 of length sin(pi/8), each bounded by
- * +-R = mu n + C (bl_system_fixed_bounds).  Their sum is a zonotope, the
- * regular octagon of circumradius R with its corners on +-t2, +-t3 and the
- * diagonals: the n-section of the 8-facet inscribed pyramid, as a set of
- * box bounds.  Returns 5. */
-static int octagon_columns(double nt[][3], double *couple, bl_column_kind *kind)
+/* The fixed form's columns at a point that can slide: the normal, and the
+ * shears whose sum, each bounded by +-R = mu n + C (bl_system_fixed_bounds),
+ * is the pyramid's section at n: the segments of cohesion_columns, scaled
+ * by their half-lengths for C = 1 (for the default 8 facets inscribed, an
+ * octagon with corners on +-t2, +-t3 and the diagonals; for 4 facets
+ * circumscribed, the square |t2|, |t3| <= R).  The pyramid must have an
+ * even number of facets (a centrally symmetric section).  Returns the
+ * number of columns. */
+static int fixed_columns(const bl_cone *cone, double nt[][3], double *couple, bl_column_kind *kind)
 {
-    double h = sin(M_PI / 8.0);
-    for (int k = 0; k < 5; k++) {
-        double phi = M_PI / 8.0 + (k - 1) * M_PI / 4.0;
-        nt[k][0] = k ? 0.0 : 1.0;
-        nt[k][1] = k ? h * cos(phi) : 0.0;
-        nt[k][2] = k ? h * sin(phi) : 0.0;
-        couple[k] = 0.0;
-        kind[k] = k ? BL_COL_SHEAR : BL_COL_NORMAL;
+    double half[64];
+    int m = cohesion_columns(cone, nt + 1, couple + 1, kind + 1, half, 1.0);
+    nt[0][0] = 1.0;
+    nt[0][1] = nt[0][2] = 0.0;
+    couple[0] = 0.0;
+    kind[0] = BL_COL_NORMAL;
+    for (int j = 1; j <= m; j++) {
+        nt[j][1] *= half[j - 1];
+        nt[j][2] *= half[j - 1];
+        kind[j] = BL_COL_SHEAR;
     }
-    return 5;
+    return m + 1;
 }
 
 /* The torsion lever of a convex contact polygon: the mean distance of its
@@ -186,7 +190,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
         double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
         int capped = form == BL_FRICTION_FIXED && isfinite(in->mu);
         for (int q = 0; q < in->np; q++, npoints++)
-            nforce += capped ? octagon_columns(nt, couple, kind)
+            nforce += capped ? fixed_columns(cone, nt, couple, kind)
                              : point_columns(mu, cone, npoints, resultant, q == 0, nt, couple, kind) +
                                    (in->cohesion > 0.0 && isfinite(mu)
                                         ? (cone->facets % 2 ? cone->facets : cone->facets / 2)
@@ -210,15 +214,15 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
             double lever = torsion_lever(in, &cen);
             mut = m->mu_t > 0.0 ? m->mu_t : (isfinite(in->mu) ? in->mu : 0.0) * lever;
         }
-        /* the fixed form: a normal and the octagon's four shears at every
-         * point that can slide, a normal and two free shears where it
-         * cannot */
+        /* the fixed form: a normal and the pyramid section's shears at
+         * every point that can slide, a normal and two free shears where
+         * it cannot */
         double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
         int capped = form == BL_FRICTION_FIXED && isfinite(in->mu);
         /* cohesion: an equal share of the joint's area at every vertex */
         double C = isfinite(in->mu) ? in->cohesion * in->area3 / in->np / s->W0 : 0.0;
         for (int q = 0; q < in->np; q++, point++) {
-            int ncol = capped ? octagon_columns(nt, couple, kind)
+            int ncol = capped ? fixed_columns(cone, nt, couple, kind)
                               : point_columns(mu, cone, point, resultant, q == 0, nt, couple, kind);
             for (int e = 0; e < ncol; e++) bound[e] = INFINITY;
             if (C > 0.0 && isfinite(mu))

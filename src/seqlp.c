@@ -56,14 +56,24 @@ static void run_free(run *r)
     free(r->best_y);
 }
 
-/* The systems of the run: in 3D the cone is the 8-facet inscribed
- * pyramid, whose n-section is the fixed form's octagon of shears. */
-static const bl_cone OCTAGON = {.facets = 8};
-
-static bl_system *build(const bl_model *m, bl_friction_form form, bl_error *err)
+/* The systems of the run: in 3D on the pyramid asked for when it has an
+ * even number of facets (its section at n is then the fixed form's
+ * polygon of shears), else on the 8-facet inscribed one. */
+static bl_system *build(const bl_model *m, const bl_cone *pyramid, bl_friction_form form,
+                        bl_error *err)
 {
     if (m->dim != 3) return bl_system_build(m, form, err);
-    return bl_system_build3(m, &OCTAGON, form, err);
+    return bl_system_build3(m, pyramid, form, err);
+}
+
+static bl_cone sequence_pyramid(const bl_cone *asked)
+{
+    bl_cone p = {.facets = 8};
+    if (!asked->adaptive && asked->facets % 2 == 0) {
+        p.facets = asked->facets;
+        p.circumscribed = asked->circumscribed;
+    }
+    return p;
 }
 
 /* The relative velocity of every contact point from the mechanism y:
@@ -307,7 +317,7 @@ static bl_lp_status random_state(run *r, double alpha, unsigned long long *rng,
 }
 
 /* The cone system of the model with every joint rigid against sliding. */
-static bl_system *rigid_system(const bl_model *m, bl_error *err)
+static bl_system *rigid_system(const bl_model *m, const bl_cone *pyramid, bl_error *err)
 {
     bl_model *c = bl_model_copy(m);
     if (!c) {
@@ -315,7 +325,7 @@ static bl_system *rigid_system(const bl_model *m, bl_error *err)
         return NULL;
     }
     for (int k = 0; k < c->ninterfaces; k++) c->interfaces[k].mu = INFINITY;
-    bl_system *s = build(c, BL_FRICTION_CONE, err);
+    bl_system *s = build(c, pyramid, BL_FRICTION_CONE, err);
     bl_model_free(c);
     return s;
 }
@@ -326,7 +336,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     bl_solution *s;
     /* (3D: the associative start on the sequence's own pyramid) */
     bl_solve_options base = o->base;
-    if (m->dim == 3) base.cone = OCTAGON;
+    bl_cone pyramid = sequence_pyramid(&o->base.cone);
+    if (m->dim == 3) base.cone = pyramid;
     if (bl_assoc_solve(m, &base, &s, err)) return -1;
     /* Only joints with finite, non-zero friction dilate: without any, the
      * associative answer is the non-associative one.  Without an
@@ -352,8 +363,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     run r = {0};
     r.t0 = t0;
     const bl_model *mc = s->model;
-    r.cone = build(mc, BL_FRICTION_CONE, err);
-    r.fixed = r.cone ? build(mc, BL_FRICTION_FIXED, err) : NULL;
+    r.cone = build(mc, &pyramid, BL_FRICTION_CONE, err);
+    r.fixed = r.cone ? build(mc, &pyramid, BL_FRICTION_FIXED, err) : NULL;
     if (!r.fixed) goto fail;
     int np = r.fixed->npoints, nc = r.fixed->ncols, ncc = r.cone->ncols;
     r.n = calloc((size_t)np + 1, sizeof *r.n);
@@ -380,7 +391,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
      * answer is itself a non-associative solution (a lower one may exist,
      * so the search goes on). */
     if (sliding) {
-        bl_system *rigid = rigid_system(mc, err);
+        bl_system *rigid = rigid_system(mc, &pyramid, err);
         if (!rigid) goto fail;
         bl_lp *lp = bl_solve_lp(rigid, rigid->lo, rigid->hi, NULL, &o->base, err);
         bl_lp_status st = lp ? bl_lp_solve(lp) : BL_LP_FAILED;
