@@ -519,6 +519,17 @@ for _, deg in ipairs { 0, 22.5, 30, 45 } do
        ("3D cube sliding at %g degrees, non-associative: mu cos(pi/8)/cos(theta - pi/8), certified"):format(deg),
        ("%.10f vs %.10f"):format(r.alpha, exact))
 end
+-- the sequence on the pyramid asked for: 4 facets circumscribed (the
+-- square |t2|, |t3| <= mu n) gives its own associative answer along the
+-- diagonal, sqrt 2 mu
+model { dim = 3, mu = 0.3 }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 1 } }
+load { live = "horizontal", direction = { 1, 1 } }
+local sq = solve { flow = "nonassociative", cone = { facets = 4, kind = "circumscribed" } }
+T.ok(sq.certified and math.abs(sq.alpha - 0.3 * math.sqrt(2)) <= 1e-8 and math.abs(sq.alpha_assoc - sq.alpha) <= 1e-8,
+     "3D sequence on the 4-facet circumscribed pyramid, diagonal slide: sqrt 2 mu = its associative answer",
+     ("%.10f"):format(sq.alpha))
 model { dim = 3, mu = 0.65 }
 wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
 local n3 = solve { flow = "nonassociative" }
