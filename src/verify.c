@@ -110,6 +110,13 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     /* kinematics, per contact point */
     bl_system_point_motion(fixed, y, w, dn, dt);
     if (d3) bl_system_tangent3(fixed, w, dt, dt3);
+    double V = 0.0, X = 0.0;
+    for (int p = 0; p < np; p++) {
+        V = fmax(V, hypot(dn[p], hypot(dt[p], dt3[p])));
+        X = fmax(X, fabs(n[p]));
+    }
+    if (V == 0.0) V = 1.0;
+    if (X == 0.0) X = 1.0;
     /* 3D: the friction's dissipation at every point, n times the most a
      * pyramid edge resists the slip per unit normal force, plus each
      * cohesion column's bound times the slip along it (the support
@@ -127,18 +134,13 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         if (cone->col_kind[j] == BL_COL_COHESION) {
             int p = cone->col_point[j];
             const double *nt = cone->col_nt + 3 * j;
-            h[p] += cone->hi[j] * fabs(nt[1] * dt[p] + nt[2] * dt3[p]);
+            /* an opening point has lost its cohesion with its forces */
+            if (dn[p] <= slip * V) h[p] += cone->hi[j] * fabs(nt[1] * dt[p] + nt[2] * dt3[p]);
         }
-    double V = 0.0, X = 0.0;
-    for (int p = 0; p < np; p++) {
-        V = fmax(V, hypot(dn[p], hypot(dt[p], dt3[p])));
-        X = fmax(X, fabs(n[p]));
-    }
-    if (V == 0.0) V = 1.0;
-    if (X == 0.0) X = 1.0;
     double adm = 0.0, comp = 0.0, flow = 0.0, dil = 0.0, dissipation = 0.0;
     for (int p = 0; p < np; p++) {
-        double R = isinf(cone->mu[p]) ? 0.0 : cone->mu[p] * n[p] + cone->cohesion[p];
+        double C = dn[p] <= slip * V ? cone->cohesion[p] : 0.0; /* opening: no cohesion */
+        double R = isinf(cone->mu[p]) ? 0.0 : cone->mu[p] * n[p] + C;
         adm = fmax(adm, -dn[p] / V);
         comp = fmax(comp, fabs(n[p] * dn[p]) / (X * V));
         if (isfinite(cone->mu[p]) && d3) {
