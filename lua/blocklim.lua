@@ -54,7 +54,7 @@ return function(core)
   M.wall = require("blocklim.wall")(M)
   M.arch = require("blocklim.arch")(M)
   require("blocklim.compare")(M)
-  require("blocklim.solid")(M)
+  require("blocklim.masonry")(M, require("blocklim.solid")(M))
 
   M.version = "0.1"
   M.clock = core.clock

@@ -1,0 +1,204 @@
+-- masonry.lua - 3D assemblages of masonry units (boxes of solid.lua) on a
+-- fixed base slab, for models with dim = 3.
+--
+-- facade{ length = n, returns = m, courses = c, unit = {L, H}, density }:
+--   a facade of n blocks L long along x, half a block (L/2) thick along y,
+--   with return walls at both ends running m blocks along +y, interlocked in
+--   alternate courses (the facade runs through the corners in the first,
+--   the returns in the next), c courses H high, on a fixed base slab.
+--   Returns the block numbers and the base.
+-- corner{ lengths = {n1, n2}, courses = c, unit = {L, H}, density }: two
+--   panels half a block (L/2) thick meeting at a corner at the origin, one
+--   n1 blocks long along +x, the other n2 blocks along +y, interlocked in
+--   alternate courses (the x panel runs through the corner in the first,
+--   the y panel in the next, with half-block closers), c courses H high,
+--   on a fixed base slab.  Returns the block numbers and the base.
+-- pier{ size = {a, b}, courses = c, height = H, density }: a pier a wide
+--   (x) and b deep (y) of c courses H high, two blocks to a course, split
+--   across x in one course and across y in the next, on a fixed base slab.
+--   Returns the block numbers and the base.
+-- bond{ length = n, courses = c, unit = {L, H}, pattern = "english",
+--   openings = { {x0, x1, c0, c1}, ... }, density }: a wall one brick (L)
+--   thick and n bricks (n L) long along x from the origin, c courses H high,
+--   of bricks L x L/2 laid as stretchers (along x) or headers (across):
+--   "english", stretcher and header courses in turn (a header course with
+--   quarter-brick closers at its ends); "header", header courses only,
+--   every other one with the closers; "stretcher", two leaves of stretchers
+--   in running bond and no header (a collar joint between them).  An
+--   opening removes what lies between x0 L and x1 L in courses c0 to c1
+--   (1 = the lowest), cutting the bricks at its jambs; the course above
+--   spans it as it is.  On a fixed base slab.  Returns the block numbers
+--   and the base.
+return function(M, fields)
+  local fail, number_list, check = fields.fail, fields.number_list, fields.check
+  local positive_integer = fields.positive_integer
+
+  function M.facade(t)
+    check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true })
+    local function count(k)
+      if math.type(t[k]) ~= "integer" or t[k] < 1 then
+        fail("facade", ("field '%s' must be a positive integer, got %s"):format(k, tostring(t[k])))
+      end
+      return t[k]
+    end
+    local n, m, courses = count("length"), count("returns"), count("courses")
+    if n < 2 then fail("facade", "field 'length' must be at least 2 blocks") end
+    local u = number_list("facade", t, "unit", 2, true)
+    local L, H, th = u[1], u[2], u[1] / 2
+    local W, D = n * L, th + m * L
+    local blocks, rho = {}, t.density
+    local function put(size, at) blocks[#blocks + 1] = M.box { size = size, at = at, density = rho } end
+    for c = 0, courses - 1 do
+      local z = c * H
+      if c % 2 == 0 then -- the facade runs through the corners
+        for k = 0, n - 1 do put({ L, th, H }, { (k + 0.5) * L, th / 2, z }) end
+        for _, x in ipairs { th / 2, W - th / 2 } do
+          for k = 0, m - 1 do put({ th, L, H }, { x, th + (k + 0.5) * L, z }) end
+        end
+      else -- the returns run through the corners
+        for _, x in ipairs { th / 2, W - th / 2 } do
+          for k = 0, m - 1 do put({ th, L, H }, { x, (k + 0.5) * L, z }) end
+          put({ th, th, H }, { x, m * L + th / 2, z })
+        end
+        for k = 0, n - 2 do put({ L, th, H }, { th + (k + 0.5) * L, th / 2, z }) end
+      end
+    end
+    local base = M.box { size = { W + 2 * th, D + 2 * th, H }, at = { W / 2, D / 2, -H }, support = true }
+    return blocks, base
+  end
+
+  function M.corner(t)
+    check("corner", t, { lengths = true, courses = true, unit = true, density = true })
+    local n = number_list("corner", t, "lengths", 2, true)
+    for i = 1, 2 do
+      if math.type(n[i]) ~= "integer" or n[i] < 2 then
+        fail("corner", ("field 'lengths' entry %d must be an integer of at least 2 blocks, got %s")
+          :format(i, tostring(n[i])))
+      end
+    end
+    local courses = positive_integer("corner", t, "courses")
+    local u = number_list("corner", t, "unit", 2, true)
+    local L, H, th = u[1], u[2], u[1] / 2
+    local blocks, rho = {}, t.density
+    local function put(size, at) blocks[#blocks + 1] = M.box { size = size, at = at, density = rho } end
+    for c = 0, courses - 1 do
+      local z = c * H
+      if c % 2 == 0 then -- the x panel runs through the corner
+        for k = 0, n[1] - 1 do put({ L, th, H }, { (k + 0.5) * L, th / 2, z }) end
+        for k = 0, n[2] - 1 do put({ th, L, H }, { th / 2, th + (k + 0.5) * L, z }) end
+      else -- the y panel runs through, closers at both ends
+        for k = 0, n[2] - 1 do put({ th, L, H }, { th / 2, (k + 0.5) * L, z }) end
+        put({ th, th, H }, { th / 2, n[2] * L + th / 2, z })
+        for k = 0, n[1] - 2 do put({ L, th, H }, { th + (k + 0.5) * L, th / 2, z }) end
+        put({ th, th, H }, { n[1] * L - th / 2, th / 2, z })
+      end
+    end
+    local X, Y = n[1] * L, n[2] * L + th
+    local base = M.box { size = { X + 2 * th, Y + 2 * th, H }, at = { X / 2, Y / 2, -H }, support = true }
+    return blocks, base
+  end
+
+  function M.pier(t)
+    check("pier", t, { size = true, courses = true, height = true, density = true })
+    local sz = number_list("pier", t, "size", 2, true)
+    local courses = positive_integer("pier", t, "courses")
+    local H = t.height
+    if type(H) ~= "number" or not (H > 0) or H == math.huge then
+      fail("pier", ("field 'height' must be a positive number, got %s"):format(tostring(H)))
+    end
+    local a, b = sz[1], sz[2]
+    local blocks, rho = {}, t.density
+    for c = 0, courses - 1 do
+      for side = -1, 1, 2 do
+        local size, at
+        if c % 2 == 0 then -- split across x: two blocks a/2 wide
+          size, at = { a / 2, b, H }, { side * a / 4, 0, c * H }
+        else -- split across y: two blocks b/2 deep
+          size, at = { a, b / 2, H }, { 0, side * b / 4, c * H }
+        end
+        blocks[#blocks + 1] = M.box { size = size, at = at, density = rho }
+      end
+    end
+    local base = M.box { size = { 2 * a, 2 * b, H }, at = { 0, 0, -H }, support = true }
+    return blocks, base
+  end
+
+  function M.bond(t)
+    check("bond", t, { length = true, courses = true, unit = true, pattern = true, openings = true,
+                       density = true })
+    local n, courses = positive_integer("bond", t, "length", 2), positive_integer("bond", t, "courses")
+    local u = number_list("bond", t, "unit", 2, true)
+    local L, H = u[1], u[2]
+    local pattern = t.pattern or "english"
+    if pattern ~= "english" and pattern ~= "header" and pattern ~= "stretcher" then
+      fail("bond", ("field 'pattern' must be \"english\", \"header\" or \"stretcher\", got %s")
+        :format(tostring(pattern)))
+    end
+    local openings = t.openings or {}
+    if type(openings) ~= "table" then fail("bond", "field 'openings' must be a list of {x0, x1, c0, c1}") end
+    for i, o in ipairs(openings) do
+      if type(o) ~= "table" or #o ~= 4 then
+        fail("bond", ("field 'openings' entry %d must be {x0, x1, c0, c1}"):format(i))
+      end
+      for j = 1, 4 do
+        if type(o[j]) ~= "number" then
+          fail("bond", ("field 'openings' entry %d must be {x0, x1, c0, c1} of numbers"):format(i))
+        end
+      end
+      if not (o[1] < o[2] and o[3] <= o[4] and o[1] >= 0 and o[2] <= n) then
+        fail("bond", ("field 'openings' entry %d must have 0 <= x0 < x1 <= length and c0 <= c1"):format(i))
+      end
+    end
+    -- a course as pieces {x0, x1, y0, y1} in units of L, then cut by the
+    -- openings that reach it
+    local function course(c)
+      local pieces = {}
+      local function run(x, widths, y0, y1)
+        for _, w in ipairs(widths) do
+          pieces[#pieces + 1] = { x, x + w, y0, y1 }
+          x = x + w
+        end
+      end
+      local header = pattern == "header" or (pattern == "english" and c % 2 == 0)
+      if header then
+        local w = {}
+        local closers = pattern == "english" or c % 2 == 0
+        if closers then w[1] = 0.25 end
+        for _ = 1, closers and 2 * n - 1 or 2 * n do w[#w + 1] = 0.5 end
+        if closers then w[#w + 1] = 0.25 end
+        run(0, w, 0, 1)
+      else -- two leaves of stretchers, running bond from course to course
+        local w = {}
+        if pattern == "stretcher" and c % 2 == 0 then w[1] = 0.5 end
+        for _ = 1, (pattern == "stretcher" and c % 2 == 0) and n - 1 or n do w[#w + 1] = 1 end
+        if pattern == "stretcher" and c % 2 == 0 then w[#w + 1] = 0.5 end
+        run(0, w, 0, 0.5)
+        run(0, w, 0.5, 1)
+      end
+      for _, o in ipairs(openings) do
+        if c >= o[3] and c <= o[4] then
+          local cut = {}
+          for _, p in ipairs(pieces) do
+            if p[2] <= o[1] or p[1] >= o[2] then cut[#cut + 1] = p
+            else
+              if p[1] < o[1] then cut[#cut + 1] = { p[1], o[1], p[3], p[4] } end
+              if p[2] > o[2] then cut[#cut + 1] = { o[2], p[2], p[3], p[4] } end
+            end
+          end
+          pieces = cut
+        end
+      end
+      return pieces
+    end
+    local blocks = {}
+    for c = 1, courses do
+      for _, p in ipairs(course(c)) do
+        blocks[#blocks + 1] = M.box { size = { (p[2] - p[1]) * L, (p[4] - p[3]) * L, H },
+                                      at = { (p[1] + p[2]) / 2 * L, (p[3] + p[4]) / 2 * L, (c - 1) * H },
+                                      density = t.density }
+      end
+    end
+    local base = M.box { size = { (n + 1) * L, 2 * L, H }, at = { n * L / 2, L / 2, -H }, support = true }
+    return blocks, base
+  end
+end
