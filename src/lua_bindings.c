@@ -1012,9 +1012,6 @@ static int model_solve(lua_State *L)
     int method = choice_field(L, 2, "solve", "method", methods, m->dim == 3 ? ASSOC : SEQLP);
     int flow = choice_field(L, 2, "solve", "flow", flows, method == ASSOC ? 0 : 1);
     if (!field_given(L, 2, "method")) method = flow ? SEQLP : ASSOC;
-    if (m->dim == 3 && method == MPEC)
-        fail(L, "solve: method \"mpec\" is not built for 3D models yet (\"assoc\" and "
-                "\"seqlp\" are)");
     if (method != MPEC && method != flow)
         fail(L, "solve: method \"%s\" solves the %s flow rule, not flow = \"%s\"",
              methods[method], flows[method], flows[flow]);

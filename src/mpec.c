@@ -90,8 +90,12 @@ static int add_motion(nlp *p, int *cap, const bl_system *f, int col, int u0, int
 typedef struct layout {
     int nx, nu, x0, u0;      /* x at x0 (alpha at 0), u at u0 */
     int *jn, *js;            /* per point: its normal and shear column in the fixed system */
-    int *sp;                 /* per point: index of s+ (s- follows), or -1 */
+    int *js2;                /* 3D: per point, a second shear column */
+    double *K;               /* 3D: per point, (dt2, dt3) = K (w[js], w[js2]), row-major 2x2 */
+    int *sp;                 /* per point: index of s+ (s- follows), or -1; 3D: of eta */
     int *cc;                 /* per cone column: index of c+ (c- follows), or -1 */
+    int *sg;                 /* 3D: per cohesion column, its slip sigma+ (sigma- follows) */
+    int *vd;                 /* 3D: per point, its velocity dn (dt2, dt3 follow), or -1 */
     int *zc;                 /* per cone column: its slack z, or -1 */
 } layout;
 
@@ -99,9 +103,65 @@ static void layout_free(layout *l)
 {
     free(l->jn);
     free(l->js);
+    free(l->js2);
+    free(l->K);
+    free(l->sg);
+    free(l->vd);
     free(l->sp);
     free(l->cc);
     free(l->zc);
+}
+
+/* 3D: adds c2 dt2 + c3 dt3 of point q, as linear forms in u, to row
+ * `row`: the slip along t2 and t3, from the powers of two of the fixed
+ * form's shear columns. */
+static int add_tangent(nlp *p, int *cap, const bl_system *f, const layout *l, int q, int row,
+                       double c2, double c3)
+{
+    const double *K = l->K + 4 * q;
+    if (add_motion(p, cap, f, l->js[q], l->u0, row, c2 * K[0] + c3 * K[2])) return -1;
+    return add_motion(p, cap, f, l->js2[q], l->u0, row, c2 * K[1] + c3 * K[3]);
+}
+
+/* 3D: adds cn dn + c2 dt2 + c3 dt3 of point q, its velocity variables, to
+ * row `row`. */
+static int add_velocity(nlp *p, int *cap, const layout *l, int q, int row, double cn, double c2,
+                        double c3)
+{
+    int v = l->vd[q];
+    return add(p, cap, row, v, cn) || add(p, cap, row, v + 1, c2) || add(p, cap, row, v + 2, c3);
+}
+
+/* Where the contact points' motions are in the fixed system f: per point
+ * its normal column, its (first two) shear columns and, in 3D, the inverse
+ * K of their tangential directions.  Returns 0 or -1. */
+static int point_columns(layout *l, const bl_system *f)
+{
+    int np = f->npoints;
+    l->jn = malloc(((size_t)np + 1) * sizeof *l->jn);
+    l->js = malloc(((size_t)np + 1) * sizeof *l->js);
+    l->js2 = malloc(((size_t)np + 1) * sizeof *l->js2);
+    l->K = calloc(4 * (size_t)np + 1, sizeof *l->K);
+    if (!l->jn || !l->js || !l->js2 || !l->K) return -1;
+    for (int q = 0; q < np; q++) l->jn[q] = l->js[q] = l->js2[q] = -1;
+    for (int j = 0; j < f->nforce; j++) {
+        int q = f->col_point[j];
+        if (f->col_kind[j] == BL_COL_NORMAL) l->jn[q] = j;
+        if (f->col_kind[j] == BL_COL_SHEAR) {
+            if (l->js[q] < 0) l->js[q] = j;
+            else if (l->js2[q] < 0) l->js2[q] = j;
+        }
+    }
+    for (int q = 0; f->dim == 3 && q < np; q++) {
+        if (l->js2[q] < 0) return -1; /* every 3D point has two (assemble3.c) */
+        const double *a = f->col_nt + 3 * l->js[q], *b = f->col_nt + 3 * l->js2[q];
+        double det = a[1] * b[2] - a[2] * b[1], *K = l->K + 4 * q;
+        K[0] = b[2] / det;
+        K[1] = -a[2] / det;
+        K[2] = -b[1] / det;
+        K[3] = a[1] / det;
+    }
+    return 0;
 }
 
 /* Builds the program of the cone system c (and its fixed twin f) for the
@@ -109,39 +169,47 @@ static void layout_free(layout *l)
 static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int nonassoc,
                  double eps)
 {
-    int np = c->npoints, nx = c->nforce, nu = c->nrows;
+    int np = c->npoints, nx = c->nforce, nu = c->nrows, d3 = c->dim == 3, st = c->dim;
     l->nx = nx;
     l->nu = nu;
     l->x0 = 1;
     l->u0 = 1 + nx;
-    l->jn = malloc(((size_t)np + 1) * sizeof *l->jn);
-    l->js = malloc(((size_t)np + 1) * sizeof *l->js);
     l->sp = malloc(((size_t)np + 1) * sizeof *l->sp);
     l->cc = malloc(((size_t)nx + 1) * sizeof *l->cc);
+    l->sg = malloc(((size_t)nx + 1) * sizeof *l->sg);
     l->zc = malloc(((size_t)nx + 1) * sizeof *l->zc);
-    if (!l->jn || !l->js || !l->sp || !l->cc || !l->zc) return -1;
-    for (int q = 0; q < np; q++) l->jn[q] = l->js[q] = l->sp[q] = -1;
-    for (int j = 0; j < f->nforce; j++) {
-        if (f->col_kind[j] == BL_COL_NORMAL) l->jn[f->col_point[j]] = j;
-        if (f->col_kind[j] == BL_COL_SHEAR) l->js[f->col_point[j]] = j;
-    }
+    l->vd = malloc(((size_t)np + 1) * sizeof *l->vd);
+    if (!l->sp || !l->cc || !l->sg || !l->zc || !l->vd || point_columns(l, f)) return -1;
+    for (int q = 0; q < np; q++) l->sp[q] = l->vd[q] = -1;
 
-    /* variables: which points slide (need s+-), cohesion distances, slacks */
+    /* variables: per point the slip rates s+- (2D, where it can slide) or
+     * eta (3D, pyramid edges, without dilatancy); cohesion distances (and
+     * in 3D the slip along each cohesion column); slacks */
     int n = l->u0 + nu, npairs = 0;
+    for (int q = 0; d3 && q < np; q++)
+        if (l->jn[q] >= 0) {
+            l->vd[q] = n;
+            n += 3;
+        }
     for (int j = 0; j < nx; j++) {
         int q = c->col_point[j], k = c->col_kind[j];
         int cone = k == BL_COL_CONE_POS || k == BL_COL_CONE_NEG;
-        if (((cone && nonassoc) || k == BL_COL_COHESION) && l->sp[q] < 0) {
+        if (!d3 && ((cone && nonassoc) || k == BL_COL_COHESION) && l->sp[q] < 0) {
             l->sp[q] = n;
             n += 2;
         }
+        if (d3 && k == BL_COL_PYRAMID && nonassoc && l->sp[q] < 0) l->sp[q] = n++;
     }
     for (int j = 0; j < nx; j++) {
         int k = c->col_kind[j];
-        l->cc[j] = l->zc[j] = -1;
+        l->cc[j] = l->sg[j] = l->zc[j] = -1;
         if (k == BL_COL_COHESION) {
             l->cc[j] = n;
             n += 2;
+            if (d3) {
+                l->sg[j] = n;
+                n += 2;
+            }
             npairs += 2;
         } else if (k != BL_COL_SHEAR) {
             l->zc[j] = n++;
@@ -165,9 +233,13 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
         p->hi[l->x0 + j] = isinf(c->hi[j]) ? BIG : c->hi[j];
     }
     for (int i = 0; i < nu; i++) p->lo[l->u0 + i] = -BIG;
+    /* 3D: dn >= 0; free slip, none where the joint is rigid */
+    for (int q = 0; q < np; q++)
+        if (l->vd[q] >= 0 && !isinf(c->mu[q])) p->lo[l->vd[q] + 1] = p->lo[l->vd[q] + 2] = -BIG;
+        else if (l->vd[q] >= 0) p->hi[l->vd[q] + 1] = p->hi[l->vd[q] + 2] = 0.0;
 
     /* linear rows */
-    int cap = 0, row = 0, rcap = nu + 1 + 4 * np + 2 * nx + 1;
+    int cap = 0, row = 0, rcap = nu + 2 + 4 * np + 3 * nx;
     p->glo = malloc(((size_t)rcap + npairs) * sizeof *p->glo);
     p->ghi = malloc(((size_t)rcap + npairs) * sizeof *p->ghi);
     if (!p->glo || !p->ghi) return -1;
@@ -181,9 +253,25 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
     for (int q = c->colptr[nx]; q < c->colptr[nx + 1]; q++)
         if (add(p, &cap, row, l->u0 + c->rowind[q], c->val[q])) return -1;
     ROW(1.0, 1.0);
-    /* per point: no interpenetration, slip = s+ - s-, or no slip when rigid */
+    /* per point: no interpenetration; the slip = s+ - s- (2D, sliding
+     * points); no slip where the joint is rigid.  3D: the velocity
+     * variables defined (their bounds say the rest), which keeps the rows
+     * below short */
     for (int q = 0; q < np; q++) {
         if (l->jn[q] < 0) continue;
+        if (d3) {
+            if (add(p, &cap, row, l->vd[q], 1.0) ||
+                add_motion(p, &cap, f, l->jn[q], l->u0, row, -1.0))
+                return -1;
+            ROW(0.0, 0.0);
+            for (int t = 1; t <= 2; t++) {
+                if (add(p, &cap, row, l->vd[q] + t, 1.0) ||
+                    add_tangent(p, &cap, f, l, q, row, t == 1 ? -1.0 : 0.0, t == 2 ? -1.0 : 0.0))
+                    return -1;
+                ROW(0.0, 0.0);
+            }
+            continue;
+        }
         if (add_motion(p, &cap, f, l->jn[q], l->u0, row, 1.0)) return -1;
         ROW(0.0, BIG);
         if (l->js[q] < 0) continue;
@@ -199,27 +287,56 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
     int k = 0;
     for (int j = 0; j < nx; j++) {
         int q = c->col_point[j], kind = c->col_kind[j];
+        const double *nt = c->col_nt + st * j;
         if (l->cc[j] >= 0) { /* c+ = C - x, c- = x + C; pairs (c-, s+), (c+, s-) */
             if (add(p, &cap, row, l->cc[j], 1.0) || add(p, &cap, row, l->x0 + j, 1.0)) return -1;
             ROW(c->hi[j], c->hi[j]);
             if (add(p, &cap, row, l->cc[j] + 1, 1.0) || add(p, &cap, row, l->x0 + j, -1.0))
                 return -1;
             ROW(-c->lo[j], -c->lo[j]);
+            /* 3D: the slip along the column, sigma+ - sigma- (T22c) */
+            int slip = d3 ? l->sg[j] : l->sp[q];
+            if (d3) {
+                if (add(p, &cap, row, slip, 1.0) || add(p, &cap, row, slip + 1, -1.0) ||
+                    add_velocity(p, &cap, l, q, row, 0.0, -nt[1], -nt[2]))
+                    return -1;
+                ROW(0.0, 0.0);
+            }
             p->pa[k] = l->cc[j] + 1;
-            p->pb[k++] = l->sp[q];
+            p->pb[k++] = slip;
             p->pa[k] = l->cc[j];
-            p->pb[k++] = l->sp[q] + 1;
+            p->pb[k++] = slip + 1;
             continue;
         }
         if (l->zc[j] < 0) continue;
         /* z = the column's power (associative: nt . (dn, dt)), or without
-         * dilatancy z = dn + the slip rate the column's friction opposes */
+         * dilatancy z = dn + the slip rate the column's friction opposes
+         * (3D: dn + eta + nt . dt, T22b) */
         if (add(p, &cap, row, l->zc[j], 1.0)) return -1;
-        if (add_motion(p, &cap, f, l->jn[q], l->u0, row, -c->col_nt[2 * j])) return -1;
-        if (kind == BL_COL_CONE_POS || kind == BL_COL_CONE_NEG) {
+        if (d3) {
+            if (add_velocity(p, &cap, l, q, row, -nt[0], kind == BL_COL_PYRAMID ? -nt[1] : 0.0,
+                             kind == BL_COL_PYRAMID ? -nt[2] : 0.0))
+                return -1;
+        } else if (add_motion(p, &cap, f, l->jn[q], l->u0, row, -nt[0])) {
+            return -1;
+        }
+        if (d3 && kind == BL_COL_PYRAMID) {
+            if (l->sp[q] >= 0) {
+                /* and eta + nt . dt >= 0 on its own: no edge resists the
+                 * slip more than eta (T22b) */
+                if (add(p, &cap, row, l->sp[q], -1.0) || add(p, &cap, row + 1, l->sp[q], 1.0) ||
+                    add_velocity(p, &cap, l, q, row + 1, 0.0, nt[1], nt[2]))
+                    return -1;
+                ROW(0.0, 0.0);
+                ROW(0.0, BIG);
+                p->pa[k] = l->x0 + j;
+                p->pb[k++] = l->zc[j];
+                continue;
+            }
+        } else if (kind == BL_COL_CONE_POS || kind == BL_COL_CONE_NEG) {
             if (nonassoc) {
                 if (add(p, &cap, row, l->sp[q] + (kind == BL_COL_CONE_NEG), -1.0)) return -1;
-            } else if (add_motion(p, &cap, f, l->js[q], l->u0, row, -c->col_nt[2 * j + 1])) {
+            } else if (add_motion(p, &cap, f, l->js[q], l->u0, row, -nt[1])) {
                 return -1;
             }
         }
@@ -340,28 +457,59 @@ static void start_from(const nlp *p, const layout *l, const bl_system *c, const 
     v[0] = x[l->nx];
     memcpy(v + l->x0, x, (size_t)l->nx * sizeof *v);
     memcpy(v + l->u0, y, (size_t)l->nu * sizeof *v);
+    int np = c->npoints, st = c->dim;
     double *w = malloc(((size_t)f->nforce + 1) * sizeof *w);
-    if (!w) return;
+    double *dt = malloc(2 * ((size_t)np + 1) * sizeof *dt); /* per point: along t2, t3 */
+    if (!w || !dt) {
+        free(w);
+        free(dt);
+        return;
+    }
     bl_system_power(f, y, w);
-    for (int q = 0; q < c->npoints; q++)
-        if (l->sp[q] >= 0 && l->js[q] >= 0) {
-            v[l->sp[q]] = fmax(w[l->js[q]], 0.0);
-            v[l->sp[q] + 1] = fmax(-w[l->js[q]], 0.0);
+    for (int q = 0; q < np; q++) {
+        double a = l->js[q] >= 0 ? w[l->js[q]] : 0.0, b = l->js2[q] >= 0 ? w[l->js2[q]] : 0.0;
+        const double *K = l->K + 4 * q;
+        dt[2 * q] = st == 3 ? K[0] * a + K[1] * b : a;
+        dt[2 * q + 1] = st == 3 ? K[2] * a + K[3] * b : 0.0;
+        if (l->vd[q] >= 0) {
+            v[l->vd[q]] = fmax(w[l->jn[q]], 0.0);
+            v[l->vd[q] + 1] = dt[2 * q];
+            v[l->vd[q] + 2] = dt[2 * q + 1];
         }
+        if (st == 2 && l->sp[q] >= 0 && l->js[q] >= 0) {
+            v[l->sp[q]] = fmax(a, 0.0);
+            v[l->sp[q] + 1] = fmax(-a, 0.0);
+        }
+    }
+    /* 3D: eta, the most a pyramid edge resists the slip */
+    for (int j = 0; st == 3 && j < l->nx; j++) {
+        int q = c->col_point[j];
+        const double *nt = c->col_nt + 3 * j;
+        if (l->sp[q] >= 0 && c->col_kind[j] == BL_COL_PYRAMID)
+            v[l->sp[q]] = fmax(v[l->sp[q]], -(nt[1] * dt[2 * q] + nt[2] * dt[2 * q + 1]));
+    }
     for (int j = 0; j < l->nx; j++) {
         int q = c->col_point[j], kind = c->col_kind[j];
+        const double *nt = c->col_nt + st * j;
+        double along = nt[1] * dt[2 * q] + (st == 3 ? nt[2] * dt[2 * q + 1] : 0.0);
         if (l->cc[j] >= 0) {
             v[l->cc[j]] = fmax(c->hi[j] - x[j], 0.0);
             v[l->cc[j] + 1] = fmax(x[j] - c->lo[j], 0.0);
+            if (l->sg[j] >= 0) {
+                v[l->sg[j]] = fmax(along, 0.0);
+                v[l->sg[j] + 1] = fmax(-along, 0.0);
+            }
         } else if (l->zc[j] >= 0) {
-            double z = c->col_nt[2 * j] * w[l->jn[q]];
-            if (kind == BL_COL_CONE_POS || kind == BL_COL_CONE_NEG)
-                z += nonassoc ? v[l->sp[q] + (kind == BL_COL_CONE_NEG)]
-                              : c->col_nt[2 * j + 1] * w[l->js[q]];
+            double z = nt[0] * w[l->jn[q]];
+            if (kind == BL_COL_PYRAMID)
+                z += along + (l->sp[q] >= 0 ? v[l->sp[q]] : 0.0);
+            else if (kind == BL_COL_CONE_POS || kind == BL_COL_CONE_NEG)
+                z += nonassoc ? v[l->sp[q] + (kind == BL_COL_CONE_NEG)] : along;
             v[l->zc[j]] = fmax(z, 0.0);
         }
     }
     free(w);
+    free(dt);
 }
 
 static int run_ipopt(nlp *p, double *v, double *mult, const bl_mpec_options *o,
@@ -382,6 +530,11 @@ static int run_ipopt(nlp *p, double *v, double *mult, const bl_mpec_options *o,
     /* MUMPS's pivot order 0 (AMD): 2.7-3.6 times faster than Ipopt's default
      * on W4 and a 150-block wall (doc/mpec.md) */
     AddIpoptIntOption(ip, "mumps_pivot_order", 0);
+    /* and a pivot tolerance of 1e-10 instead of 1e-6 (Ipopt raises it when a
+     * solve is inaccurate): the 3D W4 took 15.3 s with the default, its
+     * delayed pivots growing MUMPS's workspace again and again, 0.8 s with
+     * this; the 2D tests' answers are unchanged (doc/mpec.md) */
+    AddIpoptNumOption(ip, "mumps_pivtol", 1e-10);
     if (o->seq.base.time_limit > 0)
         AddIpoptNumOption(ip, "max_cpu_time", o->seq.base.time_limit);
     SetIntermediateCallback(ip, intermediate);
@@ -427,6 +580,15 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
 {
     double t0 = bl_clock();
     bl_one_thread();
+    if (m->dim == 3 && m->interface_model == BL_RESULTANT)
+        return bl_error_set(err, "solve: method \"mpec\" in 3D takes the vertex model so far "
+                                 "(model{ interface = \"vertex\" })");
+    /* 3D: on the sequence's pyramid (an even number of facets: its section
+     * is the fixed form's polygon of shears), from either start */
+    bl_mpec_options oo = *o;
+    bl_cone pyramid = bl_seqlp_pyramid(&o->seq.base.cone);
+    if (m->dim == 3) oo.seq.base.cone = pyramid;
+    o = &oo;
     /* the start: the associative LP (also for a cold start: it detects,
      * copies the model and tells models without an answer apart), or the
      * sequence of LPs */
@@ -456,8 +618,12 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     }
 
     const bl_model *mc = s->model;
-    bl_system *c = bl_system_build(mc, BL_FRICTION_CONE, err);
-    bl_system *f = c ? bl_system_build(mc, BL_FRICTION_FIXED, err) : NULL;
+    int d3 = mc->dim == 3;
+    bl_system *c = d3 ? bl_system_build3(mc, &pyramid, BL_FRICTION_CONE, err)
+                      : bl_system_build(mc, BL_FRICTION_CONE, err);
+    bl_system *f = !c ? NULL
+                   : d3 ? bl_system_build3(mc, &pyramid, BL_FRICTION_FIXED, err)
+                        : bl_system_build(mc, BL_FRICTION_FIXED, err);
     nlp p = {0};
     layout l = {0};
     double *v = NULL, *mult = NULL;
@@ -524,8 +690,13 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     xa[l.nx] = v[0];
     s->has_mechanism = 1;
     s->res.flow = s->res.dilatancy = NAN; /* set by the non-associative check only */
-    bl_system_forces(c, mc, xa, s->force);
-    bl_system_mechanism(c, mc, v + l.u0, s->u);
+    if (d3) {
+        bl_system_forces3(c, xa, s->force);
+        bl_system_mechanism3(c, mc, v + l.u0, s->u);
+    } else {
+        bl_system_forces(c, mc, xa, s->force);
+        bl_system_mechanism(c, mc, v + l.u0, s->u);
+    }
     bl_solution_classify(s);
     s->verified = nonassoc ? bl_verify_nonassoc(c, f, s->alpha, xa, v + l.u0, o->seq.base.tolerance,
                                                 o->seq.slip, &s->res)

@@ -56,9 +56,7 @@ static void run_free(run *r)
     free(r->best_y);
 }
 
-/* The systems of the run: in 3D on the pyramid asked for when it has an
- * even number of facets (its section at n is then the fixed form's
- * polygon of shears), else on the 8-facet inscribed one. */
+/* The systems of the run: in 3D on bl_seqlp_pyramid. */
 static bl_system *build(const bl_model *m, const bl_cone *pyramid, bl_friction_form form,
                         bl_error *err)
 {
@@ -66,7 +64,7 @@ static bl_system *build(const bl_model *m, const bl_cone *pyramid, bl_friction_f
     return bl_system_build3(m, pyramid, form, err);
 }
 
-static bl_cone sequence_pyramid(const bl_cone *asked)
+bl_cone bl_seqlp_pyramid(const bl_cone *asked)
 {
     bl_cone p = {.facets = 8};
     if (!asked->adaptive && asked->facets % 2 == 0) {
@@ -336,7 +334,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     bl_solution *s;
     /* (3D: the associative start on the sequence's own pyramid) */
     bl_solve_options base = o->base;
-    bl_cone pyramid = sequence_pyramid(&o->base.cone);
+    bl_cone pyramid = bl_seqlp_pyramid(&o->base.cone);
     if (m->dim == 3) base.cone = pyramid;
     if (bl_assoc_solve(m, &base, &s, err)) return -1;
     /* Only joints with finite, non-zero friction dilate: without any, the

@@ -33,6 +33,11 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * when the cap came first.  With when_sliding, a model whose joints cannot
  * slide (no friction, or unlimited friction: both flow rules give the same
  * answer) gets the associative solution, method "assoc". */
+/* The pyramid the 3D sequence of LPs (and the direct solve) runs on: the
+ * one asked for when it has an even number of facets (its section at n is
+ * then the fixed form's polygon of shears), else the 8-facet inscribed one. */
+bl_cone bl_seqlp_pyramid(const bl_cone *asked);
+
 int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl_error *err);
 
 #endif

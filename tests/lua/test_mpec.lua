@@ -81,6 +81,70 @@ for _, case in ipairs { { 0.5, 1, 0.3 }, { 0.5, 1, 0.8 }, { 0.4, 0.3, 0.5 } } do
   end
 end
 
+-- 3D (the vertex model on the sequence's octagonal pyramid, doc/theory.md
+-- 6.1): a box b x d x h = 0.5 x 0.3 x 1 on a slab, mu = 0.4, inscribed
+-- octagon (a corner along x, y and the diagonals, so the friction is exact
+-- along them): along x it slides, alpha = mu; along y it overturns, d/h;
+-- both flows.  Unlimited friction: it overturns along x, b/h.
+local function box3(mu)
+  model { dim = 3, mu = mu }
+  box { size = { 2, 2, 0.2 }, at = { 0, 0, -0.2 }, support = true }
+  box { size = { 0.5, 0.3, 1.0 } }
+end
+for _, case in ipairs { { { 1, 0 }, 0.4 }, { { 0, 1 }, 0.3 } } do
+  for _, flow in ipairs { "associative", "nonassociative" } do
+    box3(0.4)
+    load { live = "horizontal", direction = case[1] }
+    local r3 = solve { method = "mpec", flow = flow, progress = false }
+    T.near(r3.alpha, case[2], 1e-8, ("3D box along (%d, %d), %s mpec: alpha = %g"):format(
+      case[1][1], case[1][2], flow, case[2]))
+    T.ok(r3.verified and residuals_ok(r3), "3D box: verified, every residual within tolerance")
+  end
+end
+box3(math.huge)
+T.near(solve { method = "mpec", progress = false }.alpha, 0.5, 1e-8,
+       "3D box, joints that cannot slide: mpec alpha = b/h")
+-- cohesion: a flat box 2 x 2 x 0.5 (it slides), mu = 0.3, c = 0.05 over
+-- its base of 4: alpha = mu + c A / W
+model { dim = 3, mu = 0.3, cohesion = 0.05 }
+local flat = box { size = { 2, 2, 0.5 } }
+box { size = { 4, 4, 0.3 }, at = { 0, 0, -0.3 }, support = true }
+load { live = "horizontal" }
+local cw = current():block_info(flat).weight
+local rc = solve { method = "mpec", progress = false }
+T.near(rc.alpha, 0.3 + 0.05 * 4 / cw, 1e-8, "3D cohesion, non-associative mpec: alpha = mu + c A / W")
+T.ok(rc.verified and residuals_ok(rc), "3D cohesion, mpec: verified")
+-- W4 one block thick: the associative program reproduces the 2D LP alpha;
+-- without dilatancy a verified solution of Eq. 12 at or below it (the
+-- associative load bounds the non-associative ones)
+local function w4_3d()
+  model { dim = 3, mu = 0.65 }
+  wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
+end
+w4_3d()
+local a3 = solve { method = "mpec", flow = "associative" }
+T.near(a3.alpha, 0.33194840, 1e-6, "W4 one block thick: associative mpec alpha = the 2D LP's 0.33195")
+T.ok(a3.verified and residuals_ok(a3), "W4 one block thick, associative mpec: verified")
+local n3 = solve { method = "mpec", progress = false }
+T.ok(n3.verified and residuals_ok(n3), "W4 one block thick, non-associative mpec: verified",
+     ("%s %.6f"):format(n3.status, n3.alpha))
+T.ok(n3.alpha <= a3.alpha + 1e-9, "W4 one block thick, non-associative mpec: alpha at most the associative",
+     ("%.6f <= %.6f"):format(n3.alpha, a3.alpha))
+box3(0.4)
+load { live = "horizontal", direction = { 0, 1 } }
+local c3 = compare {}
+local rows_ok = #c3.rows == 3
+for _, row in ipairs(c3.rows) do
+  rows_ok = rows_ok and row.result.verified and math.abs(row.result.alpha - 0.3) < 1e-7
+end
+T.ok(rows_ok, "compare{} on the 3D box: assoc, seqlp and mpec rows, each verified at alpha = d/h")
+model { dim = 3, mu = 0.4, interface = "resultant" }
+box { size = { 2, 2, 0.2 }, at = { 0, 0, -0.2 }, support = true }
+box { size = { 0.5, 0.3, 1.0 } }
+load { live = "horizontal" }
+T.raises(function() solve { method = "mpec" } end, "3D mpec with the resultant model is refused",
+         "mpec", "vertex model")
+
 -- Failures are statuses with the last point and its residuals.
 build(walls.W4)
 local stopped = solve { method = "mpec", iterations = 3 }

@@ -537,7 +537,6 @@ local a3 = solve { flow = "associative" }
 T.ok(n3.certified and n3.verified and n3.alpha <= a3.alpha * (1 + 1e-9),
      "W4 extruded, non-associative: certified, verified, not above the associative alpha",
      ("%.6f vs %.6f"):format(n3.alpha, a3.alpha))
-T.raises(function() solve { method = "mpec" } end, "3D: method mpec is refused", "mpec", "3D")
 T.raises(function() solve { cone = { facets = 2 } } end, "3D: a pyramid of 2 facets is refused",
          "facets", "3 to 64")
 
