@@ -135,7 +135,7 @@ static int add_velocity(nlp *p, int *cap, const layout *l, int q, int row, doubl
 /* Where the contact points' motions are in the fixed system f: per point
  * its normal column, its (first two) shear columns and, in 3D, the inverse
  * K of their tangential directions.  Returns 0 or -1. */
-static int point_columns(layout *l, const bl_system *f)
+static int motion_columns(layout *l, const bl_system *f)
 {
     int np = f->npoints;
     l->jn = malloc(((size_t)np + 1) * sizeof *l->jn);
@@ -179,7 +179,7 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
     l->sg = malloc(((size_t)nx + 1) * sizeof *l->sg);
     l->zc = malloc(((size_t)nx + 1) * sizeof *l->zc);
     l->vd = malloc(((size_t)np + 1) * sizeof *l->vd);
-    if (!l->sp || !l->cc || !l->sg || !l->zc || !l->vd || point_columns(l, f)) return -1;
+    if (!l->sp || !l->cc || !l->sg || !l->zc || !l->vd || motion_columns(l, f)) return -1;
     for (int q = 0; q < np; q++) l->sp[q] = l->vd[q] = -1;
 
     /* variables: per point the slip rates s+- (2D, where it can slide) or
