@@ -28,16 +28,16 @@ typedef struct bl_seqlp_options {
 
 void bl_seqlp_options_default(bl_seqlp_options *o);
 
-/* As bl_assoc_solve; the solution's alpha is the certified non-associative
- * multiplier, alpha_assoc the associative one, and status BL_UNCERTIFIED
- * when the cap came first.  With when_sliding, a model whose joints cannot
- * slide (no friction, or unlimited friction: both flow rules give the same
- * answer) gets the associative solution, method "assoc". */
 /* The pyramid the 3D sequence of LPs (and the direct solve) runs on: the
  * one asked for when it has an even number of facets (its section at n is
  * then the fixed form's polygon of shears), else the 8-facet inscribed one. */
 bl_cone bl_seqlp_pyramid(const bl_cone *asked);
 
+/* As bl_assoc_solve; the solution's alpha is the certified non-associative
+ * multiplier, alpha_assoc the associative one, and status BL_UNCERTIFIED
+ * when the cap came first.  With when_sliding, a model whose joints cannot
+ * slide (no friction, or unlimited friction: both flow rules give the same
+ * answer) gets the associative solution, method "assoc". */
 int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl_error *err);
 
 #endif
