@@ -104,24 +104,11 @@ end
 box3(math.huge)
 T.near(solve { method = "mpec", progress = false }.alpha, 0.5, 1e-8,
        "3D box, joints that cannot slide: mpec alpha = b/h")
--- cohesion: a flat box 2 x 2 x 0.5 (it slides), mu = 0.3, c = 0.05 over
--- its base of 4: alpha = mu + c A / W
-model { dim = 3, mu = 0.3, cohesion = 0.05 }
-local flat = box { size = { 2, 2, 0.5 } }
-box { size = { 4, 4, 0.3 }, at = { 0, 0, -0.3 }, support = true }
-load { live = "horizontal" }
-local cw = current():block_info(flat).weight
-local rc = solve { method = "mpec", progress = false }
-T.near(rc.alpha, 0.3 + 0.05 * 4 / cw, 1e-8, "3D cohesion, non-associative mpec: alpha = mu + c A / W")
-T.ok(rc.verified and residuals_ok(rc), "3D cohesion, mpec: verified")
 -- W4 one block thick: the associative program reproduces the 2D LP alpha;
 -- without dilatancy a verified solution of Eq. 12 at or below it (the
 -- associative load bounds the non-associative ones)
-local function w4_3d()
-  model { dim = 3, mu = 0.65 }
-  wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
-end
-w4_3d()
+model { dim = 3, mu = 0.65 }
+wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
 local a3 = solve { method = "mpec", flow = "associative" }
 T.near(a3.alpha, 0.33194840, 1e-6, "W4 one block thick: associative mpec alpha = the 2D LP's 0.33195")
 T.ok(a3.verified and residuals_ok(a3), "W4 one block thick, associative mpec: verified")

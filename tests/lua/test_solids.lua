@@ -422,6 +422,9 @@ local cW = current():block_info(cb).weight
 local cn = solve { flow = "nonassociative", progress = false }
 T.near(cn.alpha, 0.3 + 0.05 * 4 / cW, 1e-8, "3D cohesion, non-associative: alpha = mu + c A / W")
 T.ok(cn.verified, "3D cohesion, non-associative: certified")
+local cm = solve { method = "mpec", progress = false }
+T.near(cm.alpha, 0.3 + 0.05 * 4 / cW, 1e-8, "3D cohesion, the direct solve (mpec): alpha = mu + c A / W")
+T.ok(cm.verified, "3D cohesion, mpec: verified")
 interface { 2, 1, cohesion = 0.1 }
 T.near(solve { flow = "associative" }.alpha, 0.3 + 0.1 * 4 / cW, 1e-8,
        "3D interface{ cohesion = 0.1 }: alpha = mu + 0.1 A / W")
