@@ -21,6 +21,7 @@ void bl_system_free(bl_system *s)
     free(s->col_nt);
     free(s->cohesion);
     free(s->mu);
+    free(s->lead);
     free(s);
 }
 
@@ -73,7 +74,9 @@ int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max)
     s->col_nt = calloc((size_t)s->dim * nc, sizeof *s->col_nt);
     s->cohesion = calloc((size_t)npoints + 1, sizeof *s->cohesion);
     s->mu = calloc((size_t)npoints + 1, sizeof *s->mu);
-    return s->cohesion && s->mu && s->colptr && s->rowind && s->val && s->lo && s->hi && s->obj &&
+    s->lead = malloc(((size_t)npoints + 1) * sizeof *s->lead);
+    for (int p = 0; s->lead && p < npoints; p++) s->lead[p] = p;
+    return s->cohesion && s->mu && s->lead && s->colptr && s->rowind && s->val && s->lo && s->hi && s->obj &&
                    s->rhs && s->col_point && s->col_kind && s->col_nt
                ? 0
                : -1;
@@ -175,7 +178,8 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
                     hi = isinf(in->mu) ? INFINITY : C;
                     break;
                 case BL_COL_COHESION: dn = 0.0; dt = 1.0; lo = -C; hi = C; break;
-                case BL_COL_PYRAMID: break; /* 3D only */
+                case BL_COL_PYRAMID: /* 3D only */
+                case BL_COL_TWIST: break;
                 }
                 bl_vec2 f = bl_v2_add(bl_v2_scale(nu, dn), bl_v2_scale(tau, dt));
                 s->colptr[c] = nz;
@@ -248,9 +252,12 @@ void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, dou
     for (int j = 0; j < s->ncols; j++) {
         lo[j] = s->lo[j];
         hi[j] = s->hi[j];
-        if (j < s->nforce && s->col_kind[j] == BL_COL_SHEAR && isfinite(s->hi[j])) {
+        int kind = j < s->nforce ? s->col_kind[j] : -1;
+        if ((kind == BL_COL_SHEAR && isfinite(s->hi[j])) || kind == BL_COL_TWIST) {
             int p = s->col_point[j];
-            double R = s->mu[p] * fmax(n[p], 0.0) + s->cohesion[p];
+            double N = 0.0; /* the points p leads follow it */
+            for (int q = p; q < s->npoints && s->lead[q] == p; q++) N += fmax(n[q], 0.0);
+            double R = kind == BL_COL_TWIST ? N : s->mu[p] * N + s->cohesion[p];
             lo[j] = -R;
             hi[j] = R;
         }

@@ -23,7 +23,9 @@ typedef enum bl_column_kind {
     BL_COL_NORMAL,     /* n = 1, t = 0,    x >= 0 (mu = 0 or no sliding) */
     BL_COL_SHEAR,      /* n = 0, t = 1,    free (no sliding) */
     BL_COL_COHESION,   /* n = 0, t = 1,    -C <= x <= C */
-    BL_COL_PYRAMID     /* 3D: an edge of the friction pyramid, x >= 0 */
+    BL_COL_PYRAMID,    /* 3D: an edge of the friction pyramid, x >= 0 */
+    BL_COL_TWIST       /* 3D resultant model, fixed form: a couple about the
+                        * normal of mu_t per unit x, -N <= x <= N */
 } bl_column_kind;
 
 /* How a 3D contact point's Coulomb cone becomes linear: a pyramid of
@@ -65,6 +67,9 @@ typedef struct bl_system {
     double *cohesion;        /* per contact point: C_p / W0 */
     double *mu;              /* per contact point: the interface's mu */
     int npoints;             /* 2 per interface; 3D the vertices of the contact polygons */
+    int *lead;               /* per contact point: the point whose columns carry its
+                              * friction (itself; in the 3D resultant model the first
+                              * vertex of its polygon, for the whole joint) */
 } bl_system;
 
 /* Builds the system for m (whose interfaces must be detected).  Returns NULL
@@ -73,9 +78,10 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
 
 /* The system of a 3D model (src/assemble3.c): six rows per free block, a
  * force at every vertex of every contact polygon; BL_FRICTION_CONE: the
- * cone linearized as given; BL_FRICTION_FIXED: a normal and two shear
- * columns whose bounds +-mu n come from bl_system_fixed_bounds (the
- * circumscribed 4-facet pyramid with n fixed; vertex model only). */
+ * cone linearized as given; BL_FRICTION_FIXED: a normal per point and
+ * shear columns whose bounds +-mu n come from bl_system_fixed_bounds (the
+ * pyramid's section at the fixed n; in the resultant model once per joint,
+ * with a twist column). */
 bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_form form,
                             bl_error *err);
 
@@ -98,7 +104,9 @@ void bl_system_tangent3(const bl_system *s, const double *w, double *dt, double 
 
 /* For a BL_FRICTION_FIXED system: the bounds of every column when the
  * contact points carry the normal forces n (per point, scaled by W0):
- * R = mu n + C on the shear columns.  lo and hi have ncols entries. */
+ * R = mu N + C on the shear columns, R = N on a twist column, where N is
+ * the normal force of the points the column's point leads (its own, or
+ * the joint's in the resultant model).  lo and hi have ncols entries. */
 void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, double *hi);
 void bl_system_free(bl_system *s);
 

@@ -97,22 +97,31 @@ static int cohesion_columns(const bl_cone *cone, double nt[][3], double *couple,
  * by their half-lengths for C = 1 (for the default 8 facets inscribed, an
  * octagon with corners on +-t2, +-t3 and the diagonals; for 4 facets
  * circumscribed, the square |t2|, |t3| <= R).  The pyramid must have an
- * even number of facets (a centrally symmetric section).  Returns the
- * number of columns. */
-static int fixed_columns(const bl_cone *cone, double nt[][3], double *couple, bl_column_kind *kind)
+ * even number of facets (a centrally symmetric section).  In the resultant
+ * model the shears come once per joint, with its first vertex (and act at
+ * the centroid), bounded by mu N, and so does a twist column, a couple of
+ * mu_t per unit within +-N: the section of the cone form's prism, the
+ * pyramid's section times |M| <= mu_t N.  Returns the number of columns. */
+static int fixed_columns(const bl_cone *cone, int resultant, int first, double nt[][3],
+                         double *couple, bl_column_kind *kind)
 {
     double half[64];
-    int m = cohesion_columns(cone, nt + 1, couple + 1, kind + 1, half, 1.0);
     nt[0][0] = 1.0;
     nt[0][1] = nt[0][2] = 0.0;
     couple[0] = 0.0;
     kind[0] = BL_COL_NORMAL;
+    if (resultant && !first) return 1;
+    int m = cohesion_columns(cone, nt + 1, couple + 1, kind + 1, half, 1.0);
     for (int j = 1; j <= m; j++) {
         nt[j][1] *= half[j - 1];
         nt[j][2] *= half[j - 1];
         kind[j] = BL_COL_SHEAR;
     }
-    return m + 1;
+    if (!resultant) return m + 1;
+    nt[m + 1][0] = nt[m + 1][1] = nt[m + 1][2] = 0.0;
+    couple[m + 1] = 1.0;
+    kind[m + 1] = BL_COL_TWIST;
+    return m + 2;
 }
 
 /* The torsion lever of a convex contact polygon: the mean distance of its
@@ -168,12 +177,6 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
     bl_system *s = bl_system_start(m, 6, err);
     if (!s) return NULL;
     s->form = form;
-    if (form == BL_FRICTION_FIXED && m->interface_model == BL_RESULTANT) {
-        bl_system_free(s);
-        bl_error_set(err, "solve: the non-associative flow in 3D takes the vertex model so far "
-                          "(model{ interface = \"vertex\" })");
-        return NULL;
-    }
     double nt[256][3], couple[256], bound[256];
     bl_column_kind kind[256];
     int resultant = m->interface_model == BL_RESULTANT;
@@ -190,7 +193,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
         double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
         int capped = form == BL_FRICTION_FIXED && isfinite(in->mu);
         for (int q = 0; q < in->np; q++, npoints++)
-            nforce += capped ? fixed_columns(cone, nt, couple, kind)
+            nforce += capped ? fixed_columns(cone, resultant, q == 0, nt, couple, kind)
                              : point_columns(mu, cone, npoints, resultant, q == 0, nt, couple, kind) +
                                    (in->cohesion > 0.0 && isfinite(mu)
                                         ? (cone->facets % 2 ? cone->facets : cone->facets / 2)
@@ -222,23 +225,26 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
         /* cohesion: an equal share of the joint's area at every vertex */
         double C = isfinite(in->mu) ? in->cohesion * in->area3 / in->np / s->W0 : 0.0;
         for (int q = 0; q < in->np; q++, point++) {
-            int ncol = capped ? fixed_columns(cone, nt, couple, kind)
+            int ncol = capped ? fixed_columns(cone, resultant, q == 0, nt, couple, kind)
                               : point_columns(mu, cone, point, resultant, q == 0, nt, couple, kind);
             for (int e = 0; e < ncol; e++) bound[e] = INFINITY;
             if (C > 0.0 && isfinite(mu))
                 ncol += cohesion_columns(cone, nt + ncol, couple + ncol, kind + ncol, bound + ncol, C);
             s->mu[point] = in->mu;
             s->cohesion[point] = C;
+            if (resultant) s->lead[point] = point - q;
             for (int e = 0; e < ncol; e++, c++) {
                 bl_vec3 fn = bl_v3_scale(in->n3, nt[e][0]);
                 bl_vec3 ft = bl_v3_add(bl_v3_scale(in->t2, nt[e][1]), bl_v3_scale(in->t3, nt[e][2]));
                 bl_vec3 f = bl_v3_add(fn, ft);
                 /* a free couple (rigid joints) has no force; a pyramid edge's
-                 * couple is mu_t per unit of its normal force */
+                 * couple is mu_t per unit of its normal force, a twist
+                 * column's mu_t per unit */
                 bl_vec3 tw = bl_v3_scale(in->n3, couple[e] * (kind[e] == BL_COL_SHEAR ? 1.0 : mut));
+                int bounded = capped && (kind[e] == BL_COL_SHEAR || kind[e] == BL_COL_TWIST);
                 s->colptr[c] = nz;
                 s->lo[c] = kind[e] == BL_COL_SHEAR && !capped ? -INFINITY : 0.0;
-                s->hi[c] = kind[e] == BL_COL_SHEAR && capped ? 0.0 : INFINITY;
+                s->hi[c] = bounded ? 0.0 : INFINITY; /* bl_system_fixed_bounds */
                 if (kind[e] == BL_COL_COHESION) {
                     s->lo[c] = -bound[e];
                     s->hi[c] = bound[e];

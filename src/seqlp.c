@@ -27,7 +27,8 @@ typedef struct run {
     bl_system *cone, *fixed;
     bl_lp *lp_fixed, *lp_cone;
     double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt, *dt3; /* dt3: 3D, along t3 */
-    double *resist; /* 3D: per point, the most a pyramid edge resists the slip */
+    double *resist; /* 3D: per joint, the most a pyramid edge resists its motion */
+    double *speed;  /* 3D: per joint, how fast it slides (and twists) */
     double t0;             /* when the run began */
     int iterations;        /* of the random-state LPs */
     int shown;             /* a progress line is on the screen */
@@ -51,6 +52,7 @@ static void run_free(run *r)
     free(r->dt);
     free(r->dt3);
     free(r->resist);
+    free(r->speed);
     free(r->obj);
     free(r->best_x);
     free(r->best_y);
@@ -92,20 +94,31 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
 {
     const bl_system *c = r->cone, *f = r->fixed;
     point_motion(r, y);
-    double V = 0.0;
+    /* 3D: per joint's lead point (bl_system), how fast it slides: the slip,
+     * and in the resultant model the twist (mu_t times the rotation about
+     * the normal, the power of a twist column, over mu); then the power of
+     * every column of the cone (the tangential part, -along, is what an
+     * edge resists per unit normal force) and the most an edge resists */
+    double *best = c->dim == 3 ? r->resist : NULL, *along = r->w, *speed = r->speed;
     for (int p = 0; p < f->npoints; p++)
-        V = fmax(V, hypot(r->dn[p], hypot(r->dt[p], c->dim == 3 ? r->dt3[p] : 0.0)));
-    double eps = slip * V;
-    /* 3D: per point, the largest resistance of a pyramid edge to the slip,
-     * -(its tangential part . slip) per unit normal force */
-    double *best = c->dim == 3 ? r->resist : NULL;
-    for (int p = 0; best && p < c->npoints; p++) best[p] = -INFINITY;
-    for (int j = 0; best && j < c->nforce; j++)
-        if (c->col_kind[j] == BL_COL_PYRAMID) {
-            int p = c->col_point[j];
-            const double *nt = c->col_nt + 3 * j;
-            best[p] = fmax(best[p], -(nt[1] * r->dt[p] + nt[2] * r->dt3[p]));
+        speed[p] = hypot(r->dt[p], c->dim == 3 ? r->dt3[p] : 0.0);
+    for (int j = 0; j < f->nforce; j++)
+        if (f->col_kind[j] == BL_COL_TWIST) {
+            int p = f->col_point[j];
+            speed[p] = hypot(speed[p], r->w[j] / f->mu[p]);
         }
+    double V = 0.0;
+    for (int p = 0; p < f->npoints; p++) V = fmax(V, hypot(r->dn[p], speed[p]));
+    double eps = slip * V;
+    if (best) {
+        for (int p = 0; p < c->npoints; p++) best[p] = -INFINITY;
+        bl_system_power(c, y, along);
+        for (int j = 0; j < c->nforce; j++) {
+            int p = c->col_point[j], g = c->lead[p];
+            along[j] -= r->dn[p] * c->col_nt[3 * j];
+            if (c->col_kind[j] == BL_COL_PYRAMID) best[g] = fmax(best[g], -along[j]);
+        }
+    }
     for (int j = 0; j < c->nforce; j++) {
         int p = c->col_point[j];
         double lo = c->lo[j], hi = c->hi[j];
@@ -115,13 +128,12 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
             /* 3D, sliding: friction only on the pyramid's edges (the
              * octagon's corner, or side) that resist the slip most, and
              * cohesion at its bounds against the slip */
-            const double *nt = c->col_nt + 3 * j;
-            double along = nt[1] * r->dt[p] + nt[2] * r->dt3[p];
-            if (hypot(r->dt[p], r->dt3[p]) > eps) {
-                if (c->col_kind[j] == BL_COL_PYRAMID && -along < best[p] - 1e-9 * hypot(r->dt[p], r->dt3[p]))
+            int g = c->lead[p];
+            if (speed[g] > eps) {
+                if (c->col_kind[j] == BL_COL_PYRAMID && -along[j] < best[g] - 1e-9 * speed[g])
                     lo = hi = 0.0;
-                if (c->col_kind[j] == BL_COL_COHESION && fabs(along) > 1e-9 * hypot(r->dt[p], r->dt3[p]))
-                    lo = hi = along > 0.0 ? c->lo[j] : c->hi[j];
+                if (c->col_kind[j] == BL_COL_COHESION && fabs(along[j]) > 1e-9 * speed[g])
+                    lo = hi = along[j] > 0.0 ? c->lo[j] : c->hi[j];
             }
         } else if (fabs(r->dt[p]) > eps) {
             /* sliding: friction opposes the slip of b on a */
@@ -215,6 +227,8 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
 {
     const bl_system *f = r->fixed;
     *stop = BL_LP_OPTIMAL;
+    double beta = o->beta, last = 0.0;
+    int turns = 0;
     for (int j = 0; j < o->max_lps; j++) {
         bl_system_fixed_bounds(f, r->n, r->lo, r->hi);
         if (!r->lp_fixed) {
@@ -262,10 +276,21 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
                 return 0;
             }
         }
+        /* Damping: from the 21st LP on, every third reversal of alpha
+         * halves beta, down to a tenth of it.  The first 20 keep beta: a
+         * sequence converges or swings on to another solution there (the
+         * stack-bond wall's lower answer came from such a swing); one
+         * that keeps oscillating (the corner model: +-0.3 % for 100 LPs)
+         * then slows down until a certificate succeeds (doc/seqlp.md 6). */
+        if (fabs(a - prev) > o->settle * fabs(a)) {
+            if (j >= 20 && (a - prev) * last < 0.0 && ++turns % 3 == 0 && beta > 0.1 * o->beta)
+                beta *= 0.5;
+            last = a - prev;
+        }
         /* relax the normal forces towards this LP's */
-        for (int p = 0; p < f->npoints; p++) r->n[p] *= 1.0 - o->beta;
+        for (int p = 0; p < f->npoints; p++) r->n[p] *= 1.0 - beta;
         for (int k = 0; k < f->nforce; k++)
-            if (f->col_kind[k] == BL_COL_NORMAL) r->n[f->col_point[k]] += o->beta * x[k];
+            if (f->col_kind[k] == BL_COL_NORMAL) r->n[f->col_point[k]] += beta * x[k];
         prev = a;
     }
     return 0;
@@ -332,6 +357,14 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
 {
     double t0 = bl_clock();
     bl_solution *s;
+    /* The resultant model's LPs run on the interior point unless told
+     * otherwise: CLP's simplex cycles on them (W4 one block thick: 38,178
+     * iterations for 16 LPs, then a false "infeasible"; the interior point
+     * certifies in 92 iterations, doc/seqlp.md 7). */
+    bl_seqlp_options own = *o;
+    if (m->dim == 3 && m->interface_model == BL_RESULTANT && own.base.lp == BL_LP_AUTO)
+        own.base.lp = BL_LP_IPM;
+    o = &own;
     /* (3D: the associative start on the sequence's own pyramid) */
     bl_solve_options base = o->base;
     bl_cone pyramid = bl_seqlp_pyramid(&o->base.cone);
@@ -370,6 +403,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.dt = calloc((size_t)np + 1, sizeof *r.dt);
     r.dt3 = calloc((size_t)np + 1, sizeof *r.dt3);
     r.resist = calloc((size_t)np + 1, sizeof *r.resist);
+    r.speed = calloc((size_t)np + 1, sizeof *r.speed);
     r.lo = malloc((size_t)nc * sizeof *r.lo);
     r.hi = malloc((size_t)nc * sizeof *r.hi);
     r.clo = malloc((size_t)ncc * sizeof *r.clo);
@@ -378,7 +412,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.w = malloc((size_t)(nc > ncc ? nc : ncc) * sizeof *r.w);
     r.best_x = malloc((size_t)ncc * sizeof *r.best_x);
     r.best_y = malloc((size_t)r.fixed->nrows * sizeof *r.best_y);
-    if (!r.n || !r.dn || !r.dt || !r.dt3 || !r.resist || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
+    if (!r.n || !r.dn || !r.dt || !r.dt3 || !r.resist || !r.speed || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
         !r.best_x || !r.best_y) {
         bl_error_set(err, "solve: out of memory");
         goto fail;

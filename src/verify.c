@@ -78,9 +78,10 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
                        bl_residuals *res)
 {
     int np = cone->npoints;
-    size_t nw = (size_t)(fixed->nforce > cone->nrows ? fixed->nforce : cone->nrows) + 1;
-    double *w = malloc(nw * sizeof *w);
-    double *buf = malloc((6 * (size_t)np + 1) * sizeof *buf);
+    int nw = fixed->nforce > cone->nrows ? fixed->nforce : cone->nrows;
+    if (cone->nforce > nw) nw = cone->nforce;
+    double *w = malloc(((size_t)nw + 1) * sizeof *w);
+    double *buf = malloc((9 * (size_t)np + 1) * sizeof *buf);
     if (!w || !buf) {
         free(w);
         free(buf);
@@ -89,9 +90,12 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         return 0;
     }
     /* per point: normal and tangential motion and force; 3D: the tangent
-     * split along t2 (dt, t) and t3 (dt3, t3), the capacity a square */
+     * split along t2 (dt, t) and t3 (dt3, t3); per joint (its lead point,
+     * bl_system): how fast it slides, the friction's power and its
+     * dissipation */
     double *dn = buf, *dt = buf + np, *n = buf + 2 * np, *t = buf + 3 * np;
-    double *dt3 = buf + 4 * np, *t3 = buf + 5 * np;
+    double *dt3 = buf + 4 * np, *t3 = buf + 5 * np, *speed = buf + 6 * np;
+    double *power = buf + 7 * np, *h = buf + 8 * np;
     int d3 = cone->dim == 3, st = cone->dim;
 
     /* statics, on the cone system */
@@ -110,32 +114,50 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     /* kinematics, per contact point */
     bl_system_point_motion(fixed, y, w, dn, dt);
     if (d3) bl_system_tangent3(fixed, w, dt, dt3);
-    double V = 0.0, X = 0.0;
+    double X = 0.0;
     for (int p = 0; p < np; p++) {
-        V = fmax(V, hypot(dn[p], hypot(dt[p], dt3[p])));
         X = fmax(X, fabs(n[p]));
+        speed[p] = hypot(dt[p], dt3[p]);
+        power[p] = 0.0;
+        h[p] = d3 ? -INFINITY : 0.0;
     }
-    if (V == 0.0) V = 1.0;
     if (X == 0.0) X = 1.0;
-    /* 3D: the friction's dissipation at every point, n times the most a
-     * pyramid edge resists the slip per unit normal force, plus each
-     * cohesion column's bound times the slip along it (the support
-     * function of the point's yield set) */
-    double *h = d3 ? w : NULL; /* w is free again: one entry per point */
-    for (int p = 0; h && p < np; p++) h[p] = -INFINITY;
-    for (int j = 0; h && j < cone->nforce; j++)
-        if (cone->col_kind[j] == BL_COL_PYRAMID) {
-            int p = cone->col_point[j];
-            const double *nt = cone->col_nt + 3 * j;
-            h[p] = fmax(h[p], -(nt[1] * dt[p] + nt[2] * dt3[p]));
+    /* 3D: per joint, the twist (a twist column's power over mu) adds to
+     * its speed, and so to the velocity scale V.  The tangential power of a cone column, along, is its
+     * power less its normal part; the friction's dissipation is N times
+     * the most a pyramid edge resists (-along per unit normal force), plus
+     * each cohesion column's bound times |along| (the support function of
+     * the joint's yield set); the friction's power is x . along. */
+    for (int j = 0; d3 && j < fixed->nforce; j++)
+        if (fixed->col_kind[j] == BL_COL_TWIST) {
+            int p = fixed->col_point[j];
+            speed[p] = hypot(speed[p], w[j] / fixed->mu[p]);
         }
-    for (int p = 0; h && p < np; p++) h[p] = isfinite(h[p]) ? fmax(h[p], 0.0) * n[p] : 0.0;
-    for (int j = 0; h && j < cone->nforce; j++)
+    double V = 0.0;
+    for (int p = 0; p < np; p++) V = fmax(V, hypot(dn[p], speed[p]));
+    if (V == 0.0) V = 1.0;
+    if (d3) bl_system_power(cone, y, w);
+    for (int j = 0; d3 && j < cone->nforce; j++) {
+        int p = cone->col_point[j], g = cone->lead[p];
+        double along = w[j] - dn[p] * cone->col_nt[3 * j];
+        power[g] += xc[j] * along;
+        if (cone->col_kind[j] == BL_COL_PYRAMID) h[g] = fmax(h[g], -along);
+    }
+    for (int p = 0; d3 && p < np; p++) {
+        if (cone->lead[p] != p) {
+            h[p] = 0.0; /* its joint's is with the lead */
+            continue;
+        }
+        double N = 0.0;
+        for (int q = p; q < np && cone->lead[q] == p; q++) N += n[q];
+        h[p] = isfinite(h[p]) ? fmax(h[p], 0.0) * N : 0.0;
+    }
+    for (int j = 0; d3 && j < cone->nforce; j++)
         if (cone->col_kind[j] == BL_COL_COHESION) {
             int p = cone->col_point[j];
-            const double *nt = cone->col_nt + 3 * j;
+            double along = w[j] - dn[p] * cone->col_nt[3 * j];
             /* an opening point has lost its cohesion with its forces */
-            if (dn[p] <= slip * V) h[p] += cone->hi[j] * fabs(nt[1] * dt[p] + nt[2] * dt3[p]);
+            if (dn[p] <= slip * V) h[cone->lead[p]] += cone->hi[j] * fabs(along);
         }
     double adm = 0.0, comp = 0.0, flow = 0.0, dil = 0.0, dissipation = 0.0;
     for (int p = 0; p < np; p++) {
@@ -144,13 +166,13 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         adm = fmax(adm, -dn[p] / V);
         comp = fmax(comp, fabs(n[p] * dn[p]) / (X * V));
         if (isfinite(cone->mu[p]) && d3) {
-            flow = fmax(flow, fabs(t[p] * dt[p] + t3[p] * dt3[p] + h[p]) / (X * V));
+            flow = fmax(flow, fabs(power[p] + h[p]) / (X * V));
             dissipation += h[p];
         } else if (isfinite(cone->mu[p])) {
             flow = fmax(flow, fabs(t[p] * dt[p] + R * fabs(dt[p])) / (X * V));
             dissipation += R * fabs(dt[p]);
         }
-        if (hypot(dt[p], dt3[p]) > slip * V && n[p] > slip * X) dil = fmax(dil, dn[p] / V);
+        if (speed[cone->lead[p]] > slip * V && n[p] > slip * X) dil = fmax(dil, dn[p] / V);
     }
     res->equilibrium = eq;
     res->yield = fmax(yield, 0.0);
