@@ -1,5 +1,6 @@
 /* Warm starts: after a small change of the bounds, re-solving from the last
- * answer takes fewer iterations than solving the changed LP from scratch,
+ * solve (its basis; for the interior point, an iterate kept from its path)
+ * takes fewer iterations than solving the changed LP from scratch,
  * with either engine, and reaches the same optimum (counted, not timed).
  * The LP is the W4 wall of DESIGN.md 5 (assembled through the model). */
 #include <math.h>
