@@ -179,15 +179,16 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
     s->form = form;
     double nt[256][3], couple[256], bound[256];
     bl_column_kind kind[256];
-    int resultant = m->interface_model == BL_RESULTANT;
     int nforce = 0, npoints = 0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
+        int resultant = in->imodel == BL_RESULTANT;
         if (in->cohesion > 0.0 && resultant) {
             bl_system_free(s);
             bl_error_set(err, "solve: cohesion in 3D takes the vertex model so far "
-                              "(model{ interface = \"vertex\" }; interface of blocks %d and %d)",
-                         in->a + 1, in->b + 1);
+                              "(interface of blocks %d and %d: model{ interface = \"vertex\" } "
+                              "or interface{ %d, %d, model = \"vertex\" })",
+                         in->a + 1, in->b + 1, in->a + 1, in->b + 1);
             return NULL;
         }
         double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
@@ -210,12 +211,13 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
         const bl_interface *in = &m->interfaces[k];
         /* resultant model: shear at the polygon's centroid, torsion couples
          * of mu_t per unit normal force (mu times the torsion lever unless
-         * the model sets mu_t) */
+         * the joint sets mu_t) */
+        int resultant = in->imodel == BL_RESULTANT;
         bl_vec3 cen = in->poly[0];
         double mut = 0.0;
         if (resultant) {
             double lever = torsion_lever(in, &cen);
-            mut = m->mu_t > 0.0 ? m->mu_t : (isfinite(in->mu) ? in->mu : 0.0) * lever;
+            mut = in->mu_t > 0.0 ? in->mu_t : (isfinite(in->mu) ? in->mu : 0.0) * lever;
         }
         /* the fixed form: a normal and the pyramid section's shears at
          * every point that can slide, a normal and two free shears where
@@ -362,9 +364,9 @@ void bl_system_slip3(const bl_system *s, const bl_model *m, const double *y, dou
         const bl_interface *in = &m->interfaces[k];
         /* the resultant model's friction acts at the centroid: its slip there */
         bl_vec3 cen = in->poly[0];
-        if (m->interface_model == BL_RESULTANT) torsion_lever(in, &cen);
+        if (in->imodel == BL_RESULTANT) torsion_lever(in, &cen);
         for (int q = 0; q < in->np; q++, point++) {
-            bl_vec3 at = m->interface_model == BL_RESULTANT ? cen : in->poly[q];
+            bl_vec3 at = in->imodel == BL_RESULTANT ? cen : in->poly[q];
             /* velocity of each side at the point: v + w x (p - g) / L0 (the
              * moment rows were scaled by 1/L0) */
             bl_vec3 d = {0, 0, 0};

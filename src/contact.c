@@ -118,6 +118,8 @@ static int add_joint3(bl_model *m, const bl_joint_spec *s, bl_error *err)
     k.t3 = bl_v3_cross(k.n3, k.t2);
     k.mu = s->has_mu ? s->mu : m->mu;
     k.cohesion = s->has_cohesion ? s->cohesion : m->cohesion;
+    k.imodel = s->has_imodel ? s->imodel : m->interface_model;
+    k.mu_t = s->has_mu_t ? s->mu_t : m->mu_t;
     k.manual = 1;
     if (bl_model_add_interface(m, &k, err)) {
         free(k.poly);
@@ -157,6 +159,8 @@ static int apply_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
         if (!same_pair(k, s->a, s->b)) continue;
         if (s->has_mu) k->mu = s->mu;
         if (s->has_cohesion) k->cohesion = s->cohesion;
+        if (s->has_imodel) k->imodel = s->imodel;
+        if (s->has_mu_t) k->mu_t = s->mu_t;
         hit = 1;
     }
     if (!hit)

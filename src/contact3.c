@@ -178,6 +178,8 @@ static int pair3(bl_model *m, int ia, int ib, double tol, double gap, bl_contact
                     c.b = ib;
                     c.mu = m->mu;
                     c.cohesion = m->cohesion;
+                    c.imodel = m->interface_model;
+                    c.mu_t = m->mu_t;
                     c.np = k;
                     c.poly = malloc((size_t)k * sizeof *c.poly);
                     if (!c.poly) return bl_error_set(err, "contacts: out of memory");

@@ -483,7 +483,8 @@ static int model_contacts(lua_State *L)
 
 static int model_interface(lua_State *L)
 {
-    static const char *const fields[] = {"mu", "cohesion", "points", NULL};
+    static const char *const fields[] = {"mu", "cohesion", "points", "model", "mu_t", NULL};
+    static const char *const interface_models[] = {"vertex", "resultant", NULL};
     bl_model *m = check_model(L, 1);
     check_fields(L, 2, "interface", fields, 2);
     bl_joint_spec s = {0};
@@ -499,6 +500,17 @@ static int model_interface(lua_State *L)
     s.mu = number_field(L, 2, "interface", "mu", 0, NONNEG);
     s.has_cohesion = field(L, 2, "cohesion") ? (lua_pop(L, 1), 1) : 0;
     s.cohesion = number_field(L, 2, "interface", "cohesion", 0, NONNEG);
+    if (m->dim == 2 && (field_given(L, 2, "model") || field_given(L, 2, "mu_t")))
+        return fail(L, "interface: fields 'model' and 'mu_t' are for 3D models (in 2D the vertex "
+                       "and resultant models are the same)");
+    s.has_imodel = field_given(L, 2, "model");
+    s.imodel = (bl_interface_model)choice_field(L, 2, "interface", "model", interface_models,
+                                                m->interface_model);
+    s.has_mu_t = field_given(L, 2, "mu_t");
+    s.mu_t = number_field(L, 2, "interface", "mu_t", 0.0, POSITIVE);
+    if (s.has_mu_t && s.imodel != BL_RESULTANT)
+        return fail(L, "interface: field 'mu_t' goes with the resultant model (model = "
+                       "\"resultant\" here or in model{ interface = \"resultant\" })");
     if (m->dim == 3 && field(L, 2, "points")) {
         int n = lua_istable(L, -1) ? (int)lua_rawlen(L, -1) : 0;
         if (n < 3 || n > BL_JOINT_POINTS)
@@ -534,8 +546,9 @@ static int model_interface(lua_State *L)
             return fail(L, "interface: field 'points' has two equal points");
         s.npoints = 2;
     }
-    if (!s.npoints && !s.has_mu && !s.has_cohesion)
-        return fail(L, "interface: give 'mu', 'cohesion' or 'points'");
+    if (!s.npoints && !s.has_mu && !s.has_cohesion && !s.has_imodel && !s.has_mu_t)
+        return fail(L, m->dim == 3 ? "interface: give 'mu', 'cohesion', 'model', 'mu_t' or 'points'"
+                                   : "interface: give 'mu', 'cohesion' or 'points'");
     bl_error err;
     if (!s.npoints) { /* an override needs an interface to act on: check now */
         if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
@@ -719,7 +732,8 @@ static int model_stats(lua_State *L)
 }
 
 /* A new table with what an interface is: its blocks a and b, mu, its
- * points (2D: the two ends; 3D: the contact polygon) and its normal. */
+ * points (2D: the two ends; 3D: the contact polygon), its normal and (3D)
+ * its interface model. */
 static void push_interface(lua_State *L, const bl_model *m, const bl_interface *in)
 {
     lua_createtable(L, 0, 10);
@@ -737,6 +751,7 @@ static void push_interface(lua_State *L, const bl_model *m, const bl_interface *
     if (m->dim == 3) push_triple(L, in->n3);
     else push_point(L, in->normal);
     lua_setfield(L, -2, "normal");
+    if (m->dim == 3) set_string(L, "model", in->imodel == BL_RESULTANT ? "resultant" : "vertex");
 }
 
 /* model:interface_info(k) -> { a, b, normal, points, mu, cohesion, area } of

@@ -254,6 +254,26 @@ bl_vec3 bl_model_gravity3(const bl_model *m)
                      bl_v3_scale(k, bl_v3_dot(k, g) * (1.0 - c)));
 }
 
+int bl_model_uses_resultant(const bl_model *m, int *a, int *b)
+{
+    *a = *b = -1;
+    if (m->dim != 3) return 0;
+    if (m->interface_model == BL_RESULTANT) return 1;
+    for (int k = 0; k < m->njoints; k++) {
+        const bl_joint_spec *s = &m->joints[k];
+        if (!s->has_imodel || s->imodel != BL_RESULTANT) continue;
+        int later = 0; /* a later setting of the same pair's model wins */
+        for (int l = k + 1; l < m->njoints && !later; l++)
+            later = m->joints[l].has_imodel && ((m->joints[l].a == s->a && m->joints[l].b == s->b) ||
+                                                (m->joints[l].a == s->b && m->joints[l].b == s->a));
+        if (later) continue;
+        *a = s->a;
+        *b = s->b;
+        return 1;
+    }
+    return 0;
+}
+
 int bl_model_free_blocks(const bl_model *m)
 {
     int n = 0;

@@ -31,6 +31,13 @@ typedef struct bl_block {
     double box3[6];
 } bl_block;
 
+/* How a 3D interface carries force (doc/theory.md 3.3). */
+typedef enum bl_interface_model {
+    BL_VERTEX,           /* a force in the friction pyramid at every vertex */
+    BL_RESULTANT         /* normal forces at the vertices, the shear resultant in
+                            the pyramid at the centroid, torsion |M1| <= mu_t N */
+} bl_interface_model;
+
 /* An interface joins block a (minus side) and block b (plus side).  Its unit
  * normal points from a into b; the tangent is the normal turned by +90
  * degrees.  The contact region is the segment p[0]-p[1]; the vertex model
@@ -48,17 +55,22 @@ typedef struct bl_interface {
     bl_vec3 *poly;
     bl_vec3 n3, t2, t3;
     double area3;
+    bl_interface_model imodel; /* 3D: how the joint carries force */
+    double mu_t;         /* 3D resultant model: torsion per unit normal force
+                            (a length); 0: mu times the joint's torsion lever */
 } bl_interface;
 
 /* A user setting for the interfaces between two blocks, kept across
- * re-detection: a friction or cohesion override, or (with npoints > 0) a
+ * re-detection: a friction, cohesion or (3D) interface model override, or
+ * (with npoints > 0) a
  * joint declared by hand that replaces the detected ones: in 2D its two
  * ends p, in 3D a convex polygon p3 of npoints >= 3. */
 #define BL_JOINT_POINTS 16
 typedef struct bl_joint_spec {
     int a, b;
-    int has_mu, has_cohesion;
-    double mu, cohesion;
+    int has_mu, has_cohesion, has_imodel, has_mu_t;
+    double mu, cohesion, mu_t;
+    bl_interface_model imodel;
     int npoints;
     bl_vec2 p[2];
     bl_vec3 p3[BL_JOINT_POINTS];
@@ -71,19 +83,11 @@ typedef struct bl_point_load {
     bl_vec3 at3, force3, moment3; /* 3D: point, force, and a couple */
 } bl_point_load;
 
-/* How a 3D interface carries force (doc/theory.md 3.3). */
-typedef enum bl_interface_model {
-    BL_VERTEX,           /* a force in the friction pyramid at every vertex */
-    BL_RESULTANT         /* normal forces at the vertices, the shear resultant in
-                            the pyramid at the centroid, torsion |M1| <= mu_t N */
-} bl_interface_model;
-
 typedef struct bl_model {
     char name[64];
     int dim;             /* 2 or 3 */
-    bl_interface_model interface_model; /* 3D */
-    double mu_t;         /* 3D resultant model: torsion per unit normal force
-                            (a length); 0: mu times the joint's torsion lever */
+    bl_interface_model interface_model; /* 3D: the interfaces' default */
+    double mu_t;         /* 3D: the resultant interfaces' default mu_t */
     /* material defaults, applied to blocks and interfaces as they are made */
     double mu, cohesion, density, thickness;
     bl_vec2 gravity;     /* unit vector of the dead load (before tilt) */
@@ -149,5 +153,9 @@ double bl_model_size(const bl_model *m);
 bl_vec2 bl_model_gravity(const bl_model *m);
 bl_vec3 bl_model_gravity3(const bl_model *m);
 int bl_model_free_blocks(const bl_model *m);
+/* Whether a 3D model's interfaces take the resultant model: all by
+ * default (1, with *a = *b = -1), or those between blocks *a and *b by
+ * interface{} (1); 0 if none.  Needs no interface detection. */
+int bl_model_uses_resultant(const bl_model *m, int *a, int *b);
 
 #endif

@@ -580,9 +580,15 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
 {
     double t0 = bl_clock();
     bl_one_thread();
-    if (m->dim == 3 && m->interface_model == BL_RESULTANT)
+    int ra, rb;
+    if (bl_model_uses_resultant(m, &ra, &rb)) {
+        if (ra < 0)
+            return bl_error_set(err, "solve: method \"mpec\" in 3D takes the vertex model so far "
+                                     "(model{ interface = \"vertex\" })");
         return bl_error_set(err, "solve: method \"mpec\" in 3D takes the vertex model so far "
-                                 "(model{ interface = \"vertex\" })");
+                                 "(interface{ %d, %d, model = \"vertex\" })", ra + 1, rb + 1);
+    }
+
     /* 3D: on the sequence's pyramid (an even number of facets: its section
      * is the fixed form's polygon of shears), from either start */
     bl_mpec_options oo = *o;

@@ -357,13 +357,13 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
 {
     double t0 = bl_clock();
     bl_solution *s;
-    /* The resultant model's LPs run on the interior point unless told
+    /* LPs with resultant joints run on the interior point unless told
      * otherwise: CLP's simplex cycles on them (W4 one block thick: 38,178
      * iterations for 16 LPs, then a false "infeasible"; the interior point
      * certifies in 92 iterations, doc/seqlp.md 7). */
     bl_seqlp_options own = *o;
-    if (m->dim == 3 && m->interface_model == BL_RESULTANT && own.base.lp == BL_LP_AUTO)
-        own.base.lp = BL_LP_IPM;
+    int ra, rb;
+    if (bl_model_uses_resultant(m, &ra, &rb) && own.base.lp == BL_LP_AUTO) own.base.lp = BL_LP_IPM;
     o = &own;
     /* (3D: the associative start on the sequence's own pyramid) */
     bl_solve_options base = o->base;

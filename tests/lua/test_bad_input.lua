@@ -42,6 +42,8 @@ local bad = {
   { "interface", function() interface { 1, 9, mu = 0.1 } end, "interface", "entry 2" },
   { "interface", function() interface { 1, 2, muu = 0.1 } end, "interface", "unknown field 'muu'" },
   { "interface", function() interface { 1, 2 } end, "interface", "'mu'" },
+  { "interface", function() interface { 1, 2, model = "resultant" } end, "interface", "'model'",
+    "3D models" },
   { "interface", function() interface { 1, 3, mu = 0.2 } end, "interface",
     "blocks 1 and 3 share no interface" },
   { "load", function() load { live = "sideways" } end, "load", "'live'", "horizontal" },

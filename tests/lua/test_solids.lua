@@ -454,6 +454,33 @@ T.near(torque { interface = "resultant", mu_t = 0.1 }, 0.1 * 2, 1e-9,
        "resultant model with mu_t = 0.1: torque capacity mu_t N")
 T.near(torque {} / torque { interface = "resultant" }, 1 / math.sqrt(2) / lever, 1e-9,
        "the vertex model's torsion is 1.848 times the uniform pressure's")
+-- the interface model per joint: interface{ a, b, model = ..., mu_t = ... }
+-- overrides the model's, and the result says which each joint took
+local function torque_joint(default, joint, flow)
+  model { dim = 3, mu = 0.6, density = 2, interface = default }
+  box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+  box { size = { 1, 1, 1 } }
+  interface(joint)
+  load { live = "none" }
+  load { live = { block = 2, moment = { 0, 0, 1 } } }
+  return solve { flow = flow }
+end
+local tj = torque_joint("vertex", { 1, 2, model = "resultant" })
+T.ok(math.abs(tj.alpha - 0.6 * 2 * lever) <= 1e-9 * tj.alpha and tj.interfaces[1].model == "resultant",
+     "interface{ model = \"resultant\" } in a vertex model: mu N times the mean distance, reported",
+     ("%.12f %s"):format(tj.alpha, tj.interfaces[1].model))
+tj = torque_joint("resultant", { 1, 2, model = "vertex" })
+T.near(tj.alpha, 0.6 * 2 / math.sqrt(2), 1e-9, "interface{ model = \"vertex\" } in a resultant model: mu N a / sqrt 2")
+T.near(torque_joint("vertex", { 1, 2, model = "resultant", mu_t = 0.1 }).alpha, 0.1 * 2, 1e-9,
+       "interface{ model = \"resultant\", mu_t = 0.1 }: torque capacity mu_t N")
+T.near(torque_joint("vertex", { 1, 2, model = "resultant" }, "nonassociative").alpha, 0.6 * 2 * lever, 1e-7,
+       "interface{ model = \"resultant\" }, non-associative: mu N times the mean distance")
+T.raises(function() torque_joint("vertex", { 1, 2, mu_t = 0.1 }) end,
+         "interface{ mu_t } on a vertex joint is refused", "interface", "'mu_t'", "resultant")
+T.raises(function() torque_joint("vertex", { 1, 2, model = "exact" }) end,
+         "interface{ model = \"exact\" } is refused", "interface", "'model'", "\"vertex\", \"resultant\"")
+T.raises(function() torque_joint("vertex", { 1, 2, model = "resultant" }); solve { method = "mpec" } end,
+         "mpec with a resultant joint is refused, naming it", "mpec", "interface{ 1, 2, model = \"vertex\" }")
 for _, w in ipairs { "W1", "W4", "W5" } do
   model { mu = 0.65 }
   wall { courses = walls[w], unit = { 0.4, 0.175 } }
