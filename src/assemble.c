@@ -21,6 +21,7 @@ void bl_system_free(bl_system *s)
     free(s->col_nt);
     free(s->cohesion);
     free(s->mu);
+    free(s->twist);
     free(s->lead);
     free(s);
 }
@@ -74,9 +75,10 @@ int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max)
     s->col_nt = calloc((size_t)s->dim * nc, sizeof *s->col_nt);
     s->cohesion = calloc((size_t)npoints + 1, sizeof *s->cohesion);
     s->mu = calloc((size_t)npoints + 1, sizeof *s->mu);
+    s->twist = calloc((size_t)npoints + 1, sizeof *s->twist);
     s->lead = malloc(((size_t)npoints + 1) * sizeof *s->lead);
     for (int p = 0; s->lead && p < npoints; p++) s->lead[p] = p;
-    return s->cohesion && s->mu && s->lead && s->colptr && s->rowind && s->val && s->lo && s->hi && s->obj &&
+    return s->cohesion && s->mu && s->twist && s->lead && s->colptr && s->rowind && s->val && s->lo && s->hi && s->obj &&
                    s->rhs && s->col_point && s->col_kind && s->col_nt
                ? 0
                : -1;
@@ -257,11 +259,19 @@ void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, dou
             int p = s->col_point[j];
             double N = 0.0; /* the points p leads follow it */
             for (int q = p; q < s->npoints && s->lead[q] == p; q++) N += fmax(n[q], 0.0);
-            double R = kind == BL_COL_TWIST ? N : s->mu[p] * N + s->cohesion[p];
+            double R = (kind == BL_COL_TWIST ? s->twist[p] : s->mu[p]) * N + s->cohesion[p];
             lo[j] = -R;
             hi[j] = R;
         }
     }
+}
+
+double bl_system_joint_opening(const bl_system *s, const double *dn, int p)
+{
+    int g = s->lead[p];
+    double d = dn[g];
+    for (int q = g + 1; q < s->npoints && s->lead[q] == g; q++) d = fmax(d, dn[q]);
+    return d;
 }
 
 void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, double *force)

@@ -25,7 +25,8 @@ typedef enum bl_column_kind {
     BL_COL_COHESION,   /* n = 0, t = 1,    -C <= x <= C */
     BL_COL_PYRAMID,    /* 3D: an edge of the friction pyramid, x >= 0 */
     BL_COL_TWIST       /* 3D resultant model, fixed form: a couple about the
-                        * normal of mu_t per unit x, -N <= x <= N */
+                        * normal of rho (the joint's torsion lever) per unit
+                        * x, |x| <= (mu_t / rho) N + C */
 } bl_column_kind;
 
 /* How a 3D contact point's Coulomb cone becomes linear: a pyramid of
@@ -64,8 +65,12 @@ typedef struct bl_system {
     double *col_nt;          /* per force column: (n, t) of a unit value; 3D (n, t2, t3) */
     double L0, W0;           /* length and force scales */
     bl_friction_form form;
-    double *cohesion;        /* per contact point: C_p / W0 */
+    double *cohesion;        /* per contact point: C_p / W0 (3D resultant model:
+                              * the joint's c A / W0 at its lead point, 0 at
+                              * the others) */
     double *mu;              /* per contact point: the interface's mu */
+    double *twist;           /* 3D resultant model, per lead point: mu_t / rho,
+                              * the twist column's bound per unit normal force */
     int npoints;             /* 2 per interface; 3D the vertices of the contact polygons */
     int *lead;               /* per contact point: the point whose columns carry its
                               * friction (itself; in the 3D resultant model the first
@@ -104,10 +109,16 @@ void bl_system_tangent3(const bl_system *s, const double *w, double *dt, double 
 
 /* For a BL_FRICTION_FIXED system: the bounds of every column when the
  * contact points carry the normal forces n (per point, scaled by W0):
- * R = mu N + C on the shear columns, R = N on a twist column, where N is
- * the normal force of the points the column's point leads (its own, or
- * the joint's in the resultant model).  lo and hi have ncols entries. */
+ * R = mu N + C on the shear columns, R = (mu_t / rho) N + C on a twist
+ * column, where N is the normal force of the points the column's point
+ * leads (its own, or the joint's in the resultant model).  lo and hi have
+ * ncols entries. */
 void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, double *hi);
+
+/* How far the joint of point p opens: the largest of dn over the points
+ * its lead point leads (p's own dn but in the 3D resultant model, where a
+ * joint that opens anywhere loses the cohesion it carries as a whole). */
+double bl_system_joint_opening(const bl_system *s, const double *dn, int p);
 void bl_system_free(bl_system *s);
 
 /* For the builders (2D in assemble.c, 3D in assemble3.c): a system with

@@ -1,7 +1,8 @@
-/* assemble3.c - the equilibrium system of a 3D model (assemble.h), vertex
- * model: a force at every vertex of every contact polygon, within a
- * pyramid of k facets that approximates Coulomb's cone (doc/theory.md,
- * 3D statics). */
+/* assemble3.c - the equilibrium system of a 3D model (assemble.h): a
+ * force at every vertex of every contact polygon, within a pyramid of k
+ * facets that approximates Coulomb's cone (the vertex model), or normal
+ * forces at the vertices with the shear and the torsion of the joint as a
+ * whole (the resultant model) (doc/theory.md, 3D statics). */
 #include "assemble.h"
 
 #include <float.h>
@@ -99,9 +100,10 @@ static int cohesion_columns(const bl_cone *cone, double nt[][3], double *couple,
  * circumscribed, the square |t2|, |t3| <= R).  The pyramid must have an
  * even number of facets (a centrally symmetric section).  In the resultant
  * model the shears come once per joint, with its first vertex (and act at
- * the centroid), bounded by mu N, and so does a twist column, a couple of
- * mu_t per unit within +-N: the section of the cone form's prism, the
- * pyramid's section times |M| <= mu_t N.  Returns the number of columns. */
+ * the centroid), bounded by mu N + C, and so does a twist column, a couple
+ * of rho (the torsion lever) per unit within +-((mu_t / rho) N + C): the
+ * section of the cone form's prism, the pyramid's section times
+ * |M| <= mu_t N + C rho.  Returns the number of columns. */
 static int fixed_columns(const bl_cone *cone, int resultant, int first, double nt[][3],
                          double *couple, bl_column_kind *kind)
 {
@@ -122,6 +124,22 @@ static int fixed_columns(const bl_cone *cone, int resultant, int first, double n
     couple[m + 1] = 1.0;
     kind[m + 1] = BL_COL_TWIST;
     return m + 2;
+}
+
+/* The cohesion of a joint in the resultant model, with its first vertex:
+ * the polygon of cohesion_columns of "radius" C = c A at the centroid, and
+ * a couple about the normal of rho (the torsion lever) per unit within
+ * +-C, the torsion c A rho of a uniform shear stress c.  Returns the
+ * number of columns. */
+static int joint_cohesion_columns(const bl_cone *cone, double nt[][3], double *couple,
+                                  bl_column_kind *kind, double *bound, double C)
+{
+    int m = cohesion_columns(cone, nt, couple, kind, bound, C);
+    nt[m][0] = nt[m][1] = nt[m][2] = 0.0;
+    couple[m] = 1.0;
+    kind[m] = BL_COL_COHESION;
+    bound[m] = C;
+    return m + 1;
 }
 
 /* The torsion lever of a convex contact polygon: the mean distance of its
@@ -183,21 +201,14 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
         int resultant = in->imodel == BL_RESULTANT;
-        if (in->cohesion > 0.0 && resultant) {
-            bl_system_free(s);
-            bl_error_set(err, "solve: cohesion in 3D takes the vertex model so far "
-                              "(interface of blocks %d and %d: model{ interface = \"vertex\" } "
-                              "or interface{ %d, %d, model = \"vertex\" })",
-                         in->a + 1, in->b + 1, in->a + 1, in->b + 1);
-            return NULL;
-        }
         double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
         int capped = form == BL_FRICTION_FIXED && isfinite(in->mu);
+        int cohesive = in->cohesion > 0.0 && isfinite(mu);
         for (int q = 0; q < in->np; q++, npoints++)
             nforce += capped ? fixed_columns(cone, resultant, q == 0, nt, couple, kind)
                              : point_columns(mu, cone, npoints, resultant, q == 0, nt, couple, kind) +
-                                   (in->cohesion > 0.0 && isfinite(mu)
-                                        ? (cone->facets % 2 ? cone->facets : cone->facets / 2)
+                                   (cohesive && (!resultant || q == 0)
+                                        ? (cone->facets % 2 ? cone->facets : cone->facets / 2) + resultant
                                         : 0);
     }
     double *fL = calloc((size_t)s->nrows, sizeof *fL);
@@ -214,9 +225,9 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
          * the joint sets mu_t) */
         int resultant = in->imodel == BL_RESULTANT;
         bl_vec3 cen = in->poly[0];
-        double mut = 0.0;
+        double mut = 0.0, lever = 0.0;
         if (resultant) {
-            double lever = torsion_lever(in, &cen);
+            lever = torsion_lever(in, &cen);
             mut = in->mu_t > 0.0 ? in->mu_t : (isfinite(in->mu) ? in->mu : 0.0) * lever;
         }
         /* the fixed form: a normal and the pyramid section's shears at
@@ -224,25 +235,34 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
          * it cannot */
         double mu = form == BL_FRICTION_FIXED ? INFINITY : in->mu;
         int capped = form == BL_FRICTION_FIXED && isfinite(in->mu);
-        /* cohesion: an equal share of the joint's area at every vertex */
-        double C = isfinite(in->mu) ? in->cohesion * in->area3 / in->np / s->W0 : 0.0;
+        /* cohesion: an equal share of the joint's area at every vertex, or
+         * in the resultant model the whole joint's with its first vertex */
+        double CA = isfinite(in->mu) ? in->cohesion * in->area3 / s->W0 : 0.0;
         for (int q = 0; q < in->np; q++, point++) {
             int ncol = capped ? fixed_columns(cone, resultant, q == 0, nt, couple, kind)
                               : point_columns(mu, cone, point, resultant, q == 0, nt, couple, kind);
             for (int e = 0; e < ncol; e++) bound[e] = INFINITY;
+            double C = resultant ? (q == 0 ? CA : 0.0) : CA / in->np;
             if (C > 0.0 && isfinite(mu))
-                ncol += cohesion_columns(cone, nt + ncol, couple + ncol, kind + ncol, bound + ncol, C);
+                ncol += resultant ? joint_cohesion_columns(cone, nt + ncol, couple + ncol, kind + ncol,
+                                                           bound + ncol, C)
+                                  : cohesion_columns(cone, nt + ncol, couple + ncol, kind + ncol,
+                                                     bound + ncol, C);
             s->mu[point] = in->mu;
             s->cohesion[point] = C;
-            if (resultant) s->lead[point] = point - q;
+            if (resultant) {
+                s->lead[point] = point - q;
+                s->twist[point] = q == 0 ? mut / lever : 0.0;
+            }
             for (int e = 0; e < ncol; e++, c++) {
                 bl_vec3 fn = bl_v3_scale(in->n3, nt[e][0]);
                 bl_vec3 ft = bl_v3_add(bl_v3_scale(in->t2, nt[e][1]), bl_v3_scale(in->t3, nt[e][2]));
                 bl_vec3 f = bl_v3_add(fn, ft);
                 /* a free couple (rigid joints) has no force; a pyramid edge's
                  * couple is mu_t per unit of its normal force, a twist
-                 * column's mu_t per unit */
-                bl_vec3 tw = bl_v3_scale(in->n3, couple[e] * (kind[e] == BL_COL_SHEAR ? 1.0 : mut));
+                 * column's, and a joint's cohesive couple, rho per unit */
+                double len = kind[e] == BL_COL_SHEAR ? 1.0 : kind[e] == BL_COL_PYRAMID ? mut : lever;
+                bl_vec3 tw = bl_v3_scale(in->n3, couple[e] * len);
                 int bounded = capped && (kind[e] == BL_COL_SHEAR || kind[e] == BL_COL_TWIST);
                 s->colptr[c] = nz;
                 s->lo[c] = kind[e] == BL_COL_SHEAR && !capped ? -INFINITY : 0.0;

@@ -95,8 +95,8 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
     const bl_system *c = r->cone, *f = r->fixed;
     point_motion(r, y);
     /* 3D: per joint's lead point (bl_system), how fast it slides: the slip,
-     * and in the resultant model the twist (mu_t times the rotation about
-     * the normal, the power of a twist column, over mu); then the power of
+     * and in the resultant model the twist (the torsion lever times the
+     * rotation about the normal, the power of a twist column); then the power of
      * every column of the cone (the tangential part, -along, is what an
      * edge resists per unit normal force) and the most an edge resists */
     double *best = c->dim == 3 ? r->resist : NULL, *along = r->w, *speed = r->speed;
@@ -105,7 +105,7 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
     for (int j = 0; j < f->nforce; j++)
         if (f->col_kind[j] == BL_COL_TWIST) {
             int p = f->col_point[j];
-            speed[p] = hypot(speed[p], r->w[j] / f->mu[p]);
+            speed[p] = hypot(speed[p], r->w[j]);
         }
     double V = 0.0;
     for (int p = 0; p < f->npoints; p++) V = fmax(V, hypot(r->dn[p], speed[p]));
@@ -122,8 +122,9 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
     for (int j = 0; j < c->nforce; j++) {
         int p = c->col_point[j];
         double lo = c->lo[j], hi = c->hi[j];
-        if (r->dn[p] > eps) {
-            lo = hi = 0.0; /* opening: no force */
+        if (r->dn[p] > eps ||
+            (c->col_kind[j] == BL_COL_COHESION && bl_system_joint_opening(c, r->dn, p) > eps)) {
+            lo = hi = 0.0; /* opening: no force, and no cohesion where its joint opens */
         } else if (c->dim == 3) {
             /* 3D, sliding: friction only on the pyramid's edges (the
              * octagon's corner, or side) that resist the slip most, and

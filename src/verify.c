@@ -122,8 +122,9 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         h[p] = d3 ? -INFINITY : 0.0;
     }
     if (X == 0.0) X = 1.0;
-    /* 3D: per joint, the twist (a twist column's power over mu) adds to
-     * its speed, and so to the velocity scale V.  The tangential power of a cone column, along, is its
+    /* 3D: per joint, the twist (a twist column's power: the torsion lever
+     * times the rotation about the normal) adds to its speed, and so to
+     * the velocity scale V.  The tangential power of a cone column, along, is its
      * power less its normal part; the friction's dissipation is N times
      * the most a pyramid edge resists (-along per unit normal force), plus
      * each cohesion column's bound times |along| (the support function of
@@ -131,7 +132,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     for (int j = 0; d3 && j < fixed->nforce; j++)
         if (fixed->col_kind[j] == BL_COL_TWIST) {
             int p = fixed->col_point[j];
-            speed[p] = hypot(speed[p], w[j] / fixed->mu[p]);
+            speed[p] = hypot(speed[p], w[j]);
         }
     double V = 0.0;
     for (int p = 0; p < np; p++) V = fmax(V, hypot(dn[p], speed[p]));
@@ -156,8 +157,9 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         if (cone->col_kind[j] == BL_COL_COHESION) {
             int p = cone->col_point[j];
             double along = w[j] - dn[p] * cone->col_nt[3 * j];
-            /* an opening point has lost its cohesion with its forces */
-            if (dn[p] <= slip * V) h[cone->lead[p]] += cone->hi[j] * fabs(along);
+            /* an opening point (a joint of the resultant model opening
+             * anywhere) has lost its cohesion with its forces */
+            if (bl_system_joint_opening(cone, dn, p) <= slip * V) h[cone->lead[p]] += cone->hi[j] * fabs(along);
         }
     double adm = 0.0, comp = 0.0, flow = 0.0, dil = 0.0, dissipation = 0.0;
     for (int p = 0; p < np; p++) {
