@@ -249,8 +249,10 @@ oom:
     return NULL;
 }
 
-void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, double *hi)
+void bl_system_fixed_bounds(const bl_system *s, const double *n, const double *C, double *lo,
+                            double *hi)
 {
+    if (!C) C = s->cohesion;
     for (int j = 0; j < s->ncols; j++) {
         lo[j] = s->lo[j];
         hi[j] = s->hi[j];
@@ -259,7 +261,7 @@ void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, dou
             int p = s->col_point[j];
             double N = 0.0; /* the points p leads follow it */
             for (int q = p; q < s->npoints && s->lead[q] == p; q++) N += fmax(n[q], 0.0);
-            double R = (kind == BL_COL_TWIST ? s->twist[p] : s->mu[p]) * N + s->cohesion[p];
+            double R = (kind == BL_COL_TWIST ? s->twist[p] : s->mu[p]) * N + C[p];
             lo[j] = -R;
             hi[j] = R;
         }

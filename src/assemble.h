@@ -113,7 +113,8 @@ void bl_system_tangent3(const bl_system *s, const double *w, double *dt, double 
  * column, where N is the normal force of the points the column's point
  * leads (its own, or the joint's in the resultant model).  lo and hi have
  * ncols entries. */
-void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, double *hi);
+void bl_system_fixed_bounds(const bl_system *s, const double *n, const double *C, double *lo,
+                            double *hi);
 
 /* How far the joint of point p opens: the largest of dn over the points
  * its lead point leads (p's own dn but in the 3D resultant model, where a

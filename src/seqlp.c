@@ -29,6 +29,8 @@ typedef struct run {
     double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt, *dt3; /* dt3: 3D, along t3 */
     double *resist; /* 3D: per joint, the most a pyramid edge resists its motion */
     double *speed;  /* 3D: per joint, how fast it slides (and twists) */
+    double *coh;    /* per point: the cohesion of the next fixed LP */
+    int cohesive;   /* some point has cohesion */
     double t0;             /* when the run began */
     int iterations;        /* of the random-state LPs */
     int shown;             /* a progress line is on the screen */
@@ -53,6 +55,7 @@ static void run_free(run *r)
     free(r->dt3);
     free(r->resist);
     free(r->speed);
+    free(r->coh);
     free(r->obj);
     free(r->best_x);
     free(r->best_y);
@@ -77,12 +80,25 @@ bl_cone bl_seqlp_pyramid(const bl_cone *asked)
 }
 
 /* The relative velocity of every contact point from the mechanism y:
- * normal dn, tangential dt (3D: along t2, and dt3 along t3). */
-static void point_motion(run *r, const double *y)
+ * normal dn, tangential dt (3D: along t2, and dt3 along t3), and per
+ * joint's lead point (bl_system) how fast it slides: the slip and, in the
+ * 3D resultant model, the twist (the torsion lever times the rotation
+ * about the normal, the power of a twist column).  Returns the velocity
+ * scale V, the largest of hypot(dn, speed). */
+static double point_motion(run *r, const double *y)
 {
     const bl_system *f = r->fixed;
     bl_system_point_motion(f, y, r->w, r->dn, r->dt);
     if (f->dim == 3) bl_system_tangent3(f, r->w, r->dt, r->dt3);
+    for (int p = 0; p < f->npoints; p++) r->speed[p] = hypot(r->dt[p], f->dim == 3 ? r->dt3[p] : 0.0);
+    for (int j = 0; j < f->nforce; j++)
+        if (f->col_kind[j] == BL_COL_TWIST) {
+            int p = f->col_point[j];
+            r->speed[p] = hypot(r->speed[p], r->w[j]);
+        }
+    double V = 0.0;
+    for (int p = 0; p < f->npoints; p++) V = fmax(V, hypot(r->dn[p], r->speed[p]));
+    return V;
 }
 
 /* The certificate: at alpha, forces in Coulomb's cone that fit the
@@ -92,23 +108,12 @@ static void point_motion(run *r, const double *y)
 static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
                             const bl_solve_options *o, bl_error *err)
 {
-    const bl_system *c = r->cone, *f = r->fixed;
-    point_motion(r, y);
-    /* 3D: per joint's lead point (bl_system), how fast it slides: the slip,
-     * and in the resultant model the twist (the torsion lever times the
-     * rotation about the normal, the power of a twist column); then the power of
-     * every column of the cone (the tangential part, -along, is what an
-     * edge resists per unit normal force) and the most an edge resists */
+    const bl_system *c = r->cone;
+    double V = point_motion(r, y);
+    /* 3D: the power of every column of the cone (the tangential part,
+     * -along, is what an edge resists per unit normal force) and, per
+     * joint, the most an edge resists */
     double *best = c->dim == 3 ? r->resist : NULL, *along = r->w, *speed = r->speed;
-    for (int p = 0; p < f->npoints; p++)
-        speed[p] = hypot(r->dt[p], c->dim == 3 ? r->dt3[p] : 0.0);
-    for (int j = 0; j < f->nforce; j++)
-        if (f->col_kind[j] == BL_COL_TWIST) {
-            int p = f->col_point[j];
-            speed[p] = hypot(speed[p], r->w[j]);
-        }
-    double V = 0.0;
-    for (int p = 0; p < f->npoints; p++) V = fmax(V, hypot(r->dn[p], speed[p]));
     double eps = slip * V;
     if (best) {
         for (int p = 0; p < c->npoints; p++) best[p] = -INFINITY;
@@ -231,7 +236,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
     double beta = o->beta, last = 0.0;
     int turns = 0;
     for (int j = 0; j < o->max_lps; j++) {
-        bl_system_fixed_bounds(f, r->n, r->lo, r->hi);
+        bl_system_fixed_bounds(f, r->n, r->coh, r->lo, r->hi);
         if (!r->lp_fixed) {
             r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
             if (!r->lp_fixed) return -1;
@@ -287,6 +292,18 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
             if (j >= 20 && (a - prev) * last < 0.0 && ++turns % 3 == 0 && beta > 0.1 * o->beta)
                 beta *= 0.5;
             last = a - prev;
+        }
+        /* relax the cohesion towards none where this LP's mechanism opens
+         * a joint, as the certificate and the verification take it: kept
+         * whole, an opening joint's cohesion let the LPs lean on a force
+         * the certificate refuses, and W4 with cohesion 0.02 or 0.05 did
+         * not certify (doc/seqlp.md 10) */
+        if (r->cohesive) {
+            double V = point_motion(r, y);
+            for (int p = 0; p < f->npoints; p++) {
+                double keep = bl_system_joint_opening(f, r->dn, p) > o->slip * V ? 0.0 : f->cohesion[p];
+                r->coh[p] = (1.0 - beta) * r->coh[p] + beta * keep;
+            }
         }
         /* relax the normal forces towards this LP's */
         for (int p = 0; p < f->npoints; p++) r->n[p] *= 1.0 - beta;
@@ -405,6 +422,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.dt3 = calloc((size_t)np + 1, sizeof *r.dt3);
     r.resist = calloc((size_t)np + 1, sizeof *r.resist);
     r.speed = calloc((size_t)np + 1, sizeof *r.speed);
+    r.coh = calloc((size_t)np + 1, sizeof *r.coh);
+    for (int p = 0; p < np; p++) r.cohesive |= r.fixed->cohesion[p] > 0.0;
     r.lo = malloc((size_t)nc * sizeof *r.lo);
     r.hi = malloc((size_t)nc * sizeof *r.hi);
     r.clo = malloc((size_t)ncc * sizeof *r.clo);
@@ -413,7 +432,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.w = malloc((size_t)(nc > ncc ? nc : ncc) * sizeof *r.w);
     r.best_x = malloc((size_t)ncc * sizeof *r.best_x);
     r.best_y = malloc((size_t)r.fixed->nrows * sizeof *r.best_y);
-    if (!r.n || !r.dn || !r.dt || !r.dt3 || !r.resist || !r.speed || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
+    if (!r.n || !r.dn || !r.dt || !r.dt3 || !r.resist || !r.speed || !r.coh || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
         !r.best_x || !r.best_y) {
         bl_error_set(err, "solve: out of memory");
         goto fail;
@@ -465,6 +484,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                 continue;
             }
         }
+        memcpy(r.coh, r.fixed->cohesion, (size_t)np * sizeof *r.coh);
         if (start_history(s, from)) {
             bl_error_set(err, "solve: out of memory");
             goto fail;
