@@ -133,12 +133,16 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
         } else if (c->dim == 3) {
             /* 3D, sliding: friction only on the pyramid's edges (the
              * octagon's corner, or side) that resist the slip most, and
-             * cohesion at its bounds against the slip */
+             * cohesion at its bounds against the slip.  Resistances within
+             * slip times the joint's speed of the most count as the most:
+             * an interior point's slip square to a side of the octagon is
+             * square to it only to that accuracy (with 1e-9 instead, the
+             * dome of models/ never certified, doc/seqlp.md 11). */
             int g = c->lead[p];
             if (speed[g] > eps) {
-                if (c->col_kind[j] == BL_COL_PYRAMID && -along[j] < best[g] - 1e-9 * speed[g])
+                if (c->col_kind[j] == BL_COL_PYRAMID && -along[j] < best[g] - slip * speed[g])
                     lo = hi = 0.0;
-                if (c->col_kind[j] == BL_COL_COHESION && fabs(along[j]) > 1e-9 * speed[g])
+                if (c->col_kind[j] == BL_COL_COHESION && fabs(along[j]) > slip * speed[g])
                     lo = hi = along[j] > 0.0 ? c->lo[j] : c->hi[j];
             }
         } else if (fabs(r->dt[p]) > eps) {
