@@ -19,6 +19,7 @@ void bl_system_free(bl_system *s)
     free(s->col_point);
     free(s->col_kind);
     free(s->col_nt);
+    free(s->col_twist);
     free(s->cohesion);
     free(s->mu);
     free(s->twist);
@@ -73,13 +74,14 @@ int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max)
     s->col_point = malloc(nc * sizeof *s->col_point);
     s->col_kind = malloc(nc * sizeof *s->col_kind);
     s->col_nt = calloc((size_t)s->dim * nc, sizeof *s->col_nt);
+    s->col_twist = calloc(nc, sizeof *s->col_twist);
     s->cohesion = calloc((size_t)npoints + 1, sizeof *s->cohesion);
     s->mu = calloc((size_t)npoints + 1, sizeof *s->mu);
     s->twist = calloc((size_t)npoints + 1, sizeof *s->twist);
     s->lead = malloc(((size_t)npoints + 1) * sizeof *s->lead);
     for (int p = 0; s->lead && p < npoints; p++) s->lead[p] = p;
     return s->cohesion && s->mu && s->twist && s->lead && s->colptr && s->rowind && s->val && s->lo && s->hi && s->obj &&
-                   s->rhs && s->col_point && s->col_kind && s->col_nt
+                   s->rhs && s->col_point && s->col_kind && s->col_nt && s->col_twist
                ? 0
                : -1;
 }

@@ -63,6 +63,10 @@ typedef struct bl_system {
     int *col_point;          /* per force column: 2 * interface + end */
     signed char *col_kind;   /* per force column: bl_column_kind */
     double *col_nt;          /* per force column: (n, t) of a unit value; 3D (n, t2, t3) */
+    double *col_twist;       /* 3D resultant model, per force column: the multiple of
+                              * its joint's twist rho omega in its power (+-mu_t / rho
+                              * for a pyramid edge, 1 for a twist or cohesive couple);
+                              * 0 otherwise */
     double L0, W0;           /* length and force scales */
     bl_friction_form form;
     double *cohesion;        /* per contact point: C_p / W0 (3D resultant model:

@@ -274,6 +274,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
                 s->col_point[c] = point;
                 s->col_kind[c] = (signed char)kind[e];
                 memcpy(s->col_nt + 3 * c, nt[e], sizeof nt[e]);
+                s->col_twist[c] = resultant ? couple[e] * len / lever : 0.0;
                 /* f acts on b, -f on a: rows force x, y, z, moment x, y, z */
                 int blk[2] = {in->a, in->b};
                 for (int side = 0; side < 2; side++) {

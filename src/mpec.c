@@ -91,11 +91,13 @@ typedef struct layout {
     int nx, nu, x0, u0;      /* x at x0 (alpha at 0), u at u0 */
     int *jn, *js;            /* per point: its normal and shear column in the fixed system */
     int *js2;                /* 3D: per point, a second shear column */
+    int *jt;                 /* 3D resultant model: per lead point, its twist column */
     double *K;               /* 3D: per point, (dt2, dt3) = K (w[js], w[js2]), row-major 2x2 */
     int *sp;                 /* per point: index of s+ (s- follows), or -1; 3D: of eta */
     int *cc;                 /* per cone column: index of c+ (c- follows), or -1 */
     int *sg;                 /* 3D: per cohesion column, its slip sigma+ (sigma- follows) */
     int *vd;                 /* 3D: per point, its velocity dn (dt2, dt3 follow), or -1 */
+    int *vw;                 /* 3D resultant model: per lead point, its twist rho omega, or -1 */
     int *zc;                 /* per cone column: its slack z, or -1 */
 } layout;
 
@@ -104,6 +106,8 @@ static void layout_free(layout *l)
     free(l->jn);
     free(l->js);
     free(l->js2);
+    free(l->jt);
+    free(l->vw);
     free(l->K);
     free(l->sg);
     free(l->vd);
@@ -123,13 +127,15 @@ static int add_tangent(nlp *p, int *cap, const bl_system *f, const layout *l, in
     return add_motion(p, cap, f, l->js2[q], l->u0, row, c2 * K[1] + c3 * K[3]);
 }
 
-/* 3D: adds cn dn + c2 dt2 + c3 dt3 of point q, its velocity variables, to
- * row `row`. */
-static int add_velocity(nlp *p, int *cap, const layout *l, int q, int row, double cn, double c2,
-                        double c3)
+/* 3D: adds cn dn + c2 dt2 + c3 dt3 + cw tw for point q to row `row`: dn
+ * of q, the slip (dt2, dt3) and, in the resultant model, the twist tw of
+ * the point that leads q's joint (q itself in the vertex model). */
+static int add_velocity(nlp *p, int *cap, const bl_system *c, const layout *l, int q, int row,
+                        double cn, double c2, double c3, double cw)
 {
-    int v = l->vd[q];
-    return add(p, cap, row, v, cn) || add(p, cap, row, v + 1, c2) || add(p, cap, row, v + 2, c3);
+    int g = c->lead[q], v = l->vd[g];
+    return add(p, cap, row, l->vd[q], cn) || add(p, cap, row, v + 1, c2) ||
+           add(p, cap, row, v + 2, c3) || (l->vw[g] >= 0 && add(p, cap, row, l->vw[g], cw));
 }
 
 /* Where the contact points' motions are in the fixed system f: per point
@@ -141,19 +147,24 @@ static int motion_columns(layout *l, const bl_system *f)
     l->jn = malloc(((size_t)np + 1) * sizeof *l->jn);
     l->js = malloc(((size_t)np + 1) * sizeof *l->js);
     l->js2 = malloc(((size_t)np + 1) * sizeof *l->js2);
+    l->jt = malloc(((size_t)np + 1) * sizeof *l->jt);
     l->K = calloc(4 * (size_t)np + 1, sizeof *l->K);
-    if (!l->jn || !l->js || !l->js2 || !l->K) return -1;
-    for (int q = 0; q < np; q++) l->jn[q] = l->js[q] = l->js2[q] = -1;
+    if (!l->jn || !l->js || !l->js2 || !l->jt || !l->K) return -1;
+    for (int q = 0; q < np; q++) l->jn[q] = l->js[q] = l->js2[q] = l->jt[q] = -1;
     for (int j = 0; j < f->nforce; j++) {
         int q = f->col_point[j];
         if (f->col_kind[j] == BL_COL_NORMAL) l->jn[q] = j;
-        if (f->col_kind[j] == BL_COL_SHEAR) {
+        if (f->col_kind[j] == BL_COL_TWIST) l->jt[q] = j;
+        const double *nt = f->col_nt + f->dim * j;
+        int along = nt[1] != 0.0 || (f->dim == 3 && nt[2] != 0.0); /* not a free couple */
+        if (f->col_kind[j] == BL_COL_SHEAR && along) {
             if (l->js[q] < 0) l->js[q] = j;
             else if (l->js2[q] < 0) l->js2[q] = j;
         }
     }
     for (int q = 0; f->dim == 3 && q < np; q++) {
-        if (l->js2[q] < 0) return -1; /* every 3D point has two (assemble3.c) */
+        if (f->lead[q] != q) continue; /* a resultant joint's slip is its lead's */
+        if (l->js2[q] < 0) return -1; /* every other 3D point has two (assemble3.c) */
         const double *a = f->col_nt + 3 * l->js[q], *b = f->col_nt + 3 * l->js2[q];
         double det = a[1] * b[2] - a[2] * b[1], *K = l->K + 4 * q;
         K[0] = b[2] / det;
@@ -179,18 +190,23 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
     l->sg = malloc(((size_t)nx + 1) * sizeof *l->sg);
     l->zc = malloc(((size_t)nx + 1) * sizeof *l->zc);
     l->vd = malloc(((size_t)np + 1) * sizeof *l->vd);
-    if (!l->sp || !l->cc || !l->sg || !l->zc || !l->vd || motion_columns(l, f)) return -1;
-    for (int q = 0; q < np; q++) l->sp[q] = l->vd[q] = -1;
+    l->vw = malloc(((size_t)np + 1) * sizeof *l->vw);
+    if (!l->sp || !l->cc || !l->sg || !l->zc || !l->vd || !l->vw || motion_columns(l, f)) return -1;
+    for (int q = 0; q < np; q++) l->sp[q] = l->vd[q] = l->vw[q] = -1;
 
     /* variables: per point the slip rates s+- (2D, where it can slide) or
-     * eta (3D, pyramid edges, without dilatancy); cohesion distances (and
-     * in 3D the slip along each cohesion column); slacks */
+     * eta (3D, pyramid edges, without dilatancy; per joint in the resultant
+     * model); cohesion distances (and in 3D the slip along each cohesion
+     * column); slacks.  3D: per point its velocity, and per resultant
+     * joint its twist */
     int n = l->u0 + nu, npairs = 0;
-    for (int q = 0; d3 && q < np; q++)
+    for (int q = 0; d3 && q < np; q++) {
         if (l->jn[q] >= 0) {
             l->vd[q] = n;
             n += 3;
         }
+        if (l->jt[q] >= 0) l->vw[q] = n++;
+    }
     for (int j = 0; j < nx; j++) {
         int q = c->col_point[j], k = c->col_kind[j];
         int cone = k == BL_COL_CONE_POS || k == BL_COL_CONE_NEG;
@@ -198,7 +214,7 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
             l->sp[q] = n;
             n += 2;
         }
-        if (d3 && k == BL_COL_PYRAMID && nonassoc && l->sp[q] < 0) l->sp[q] = n++;
+        if (d3 && k == BL_COL_PYRAMID && nonassoc && l->sp[c->lead[q]] < 0) l->sp[c->lead[q]] = n++;
     }
     for (int j = 0; j < nx; j++) {
         int k = c->col_kind[j];
@@ -233,10 +249,15 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
         p->hi[l->x0 + j] = isinf(c->hi[j]) ? BIG : c->hi[j];
     }
     for (int i = 0; i < nu; i++) p->lo[l->u0 + i] = -BIG;
-    /* 3D: dn >= 0; free slip, none where the joint is rigid */
-    for (int q = 0; q < np; q++)
-        if (l->vd[q] >= 0 && !isinf(c->mu[q])) p->lo[l->vd[q] + 1] = p->lo[l->vd[q] + 2] = -BIG;
-        else if (l->vd[q] >= 0) p->hi[l->vd[q] + 1] = p->hi[l->vd[q] + 2] = 0.0;
+    /* 3D: dn >= 0; free slip and twist, none where the joint is rigid (or
+     * at a resultant joint's other points, whose slip is its lead's) */
+    for (int q = 0; q < np; q++) {
+        if (l->vd[q] >= 0 && !isinf(c->mu[q]) && c->lead[q] == q)
+            p->lo[l->vd[q] + 1] = p->lo[l->vd[q] + 2] = -BIG;
+        else if (l->vd[q] >= 0)
+            p->hi[l->vd[q] + 1] = p->hi[l->vd[q] + 2] = 0.0;
+        if (l->vw[q] >= 0) p->lo[l->vw[q]] = -BIG;
+    }
 
     /* linear rows */
     int cap = 0, row = 0, rcap = nu + 2 + 4 * np + 3 * nx;
@@ -264,6 +285,13 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
                 add_motion(p, &cap, f, l->jn[q], l->u0, row, -1.0))
                 return -1;
             ROW(0.0, 0.0);
+            if (l->vw[q] >= 0) { /* tw, the power of the twist column */
+                if (add(p, &cap, row, l->vw[q], 1.0) ||
+                    add_motion(p, &cap, f, l->jt[q], l->u0, row, -1.0))
+                    return -1;
+                ROW(0.0, 0.0);
+            }
+            if (l->js2[q] < 0) continue; /* a resultant joint's other point */
             for (int t = 1; t <= 2; t++) {
                 if (add(p, &cap, row, l->vd[q] + t, 1.0) ||
                     add_tangent(p, &cap, f, l, q, row, t == 1 ? -1.0 : 0.0, t == 2 ? -1.0 : 0.0))
@@ -298,7 +326,7 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
             int slip = d3 ? l->sg[j] : l->sp[q];
             if (d3) {
                 if (add(p, &cap, row, slip, 1.0) || add(p, &cap, row, slip + 1, -1.0) ||
-                    add_velocity(p, &cap, l, q, row, 0.0, -nt[1], -nt[2]))
+                    add_velocity(p, &cap, c, l, q, row, 0.0, -nt[1], -nt[2], -c->col_twist[j]))
                     return -1;
                 ROW(0.0, 0.0);
             }
@@ -313,19 +341,20 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
          * dilatancy z = dn + the slip rate the column's friction opposes
          * (3D: dn + eta + nt . dt, T22b) */
         if (add(p, &cap, row, l->zc[j], 1.0)) return -1;
+        int pyr = kind == BL_COL_PYRAMID, g = c->lead[q];
         if (d3) {
-            if (add_velocity(p, &cap, l, q, row, -nt[0], kind == BL_COL_PYRAMID ? -nt[1] : 0.0,
-                             kind == BL_COL_PYRAMID ? -nt[2] : 0.0))
+            if (add_velocity(p, &cap, c, l, q, row, -nt[0], pyr ? -nt[1] : 0.0, pyr ? -nt[2] : 0.0,
+                             pyr ? -c->col_twist[j] : 0.0))
                 return -1;
         } else if (add_motion(p, &cap, f, l->jn[q], l->u0, row, -nt[0])) {
             return -1;
         }
         if (d3 && kind == BL_COL_PYRAMID) {
-            if (l->sp[q] >= 0) {
+            if (l->sp[g] >= 0) {
                 /* and eta + nt . dt >= 0 on its own: no edge resists the
-                 * slip more than eta (T22b) */
-                if (add(p, &cap, row, l->sp[q], -1.0) || add(p, &cap, row + 1, l->sp[q], 1.0) ||
-                    add_velocity(p, &cap, l, q, row + 1, 0.0, nt[1], nt[2]))
+                 * slip (and twist) more than eta (T22b) */
+                if (add(p, &cap, row, l->sp[g], -1.0) || add(p, &cap, row + 1, l->sp[g], 1.0) ||
+                    add_velocity(p, &cap, c, l, q, row + 1, 0.0, nt[1], nt[2], c->col_twist[j]))
                     return -1;
                 ROW(0.0, 0.0);
                 ROW(0.0, BIG);
@@ -460,9 +489,11 @@ static void start_from(const nlp *p, const layout *l, const bl_system *c, const 
     int np = c->npoints, st = c->dim;
     double *w = malloc(((size_t)f->nforce + 1) * sizeof *w);
     double *dt = malloc(2 * ((size_t)np + 1) * sizeof *dt); /* per point: along t2, t3 */
-    if (!w || !dt) {
+    double *al = malloc(((size_t)l->nx + 1) * sizeof *al);   /* per cone column: along */
+    if (!w || !dt || !al) {
         free(w);
         free(dt);
+        free(al);
         return;
     }
     bl_system_power(f, y, w);
@@ -476,22 +507,27 @@ static void start_from(const nlp *p, const layout *l, const bl_system *c, const 
             v[l->vd[q] + 1] = dt[2 * q];
             v[l->vd[q] + 2] = dt[2 * q + 1];
         }
+        if (l->vw[q] >= 0) v[l->vw[q]] = w[l->jt[q]];
         if (st == 2 && l->sp[q] >= 0 && l->js[q] >= 0) {
             v[l->sp[q]] = fmax(a, 0.0);
             v[l->sp[q] + 1] = fmax(-a, 0.0);
         }
     }
-    /* 3D: eta, the most a pyramid edge resists the slip */
-    for (int j = 0; st == 3 && j < l->nx; j++) {
-        int q = c->col_point[j];
-        const double *nt = c->col_nt + 3 * j;
-        if (l->sp[q] >= 0 && c->col_kind[j] == BL_COL_PYRAMID)
-            v[l->sp[q]] = fmax(v[l->sp[q]], -(nt[1] * dt[2 * q] + nt[2] * dt[2 * q + 1]));
+    /* 3D: along, the tangential part of a column's power (the slip and
+     * twist of its point's joint); eta, the most a pyramid edge resists */
+    for (int j = 0; j < l->nx; j++) {
+        int q = c->col_point[j], g = c->lead[q];
+        const double *nt = c->col_nt + st * j;
+        double along = nt[1] * dt[2 * g];
+        if (st == 3) along += nt[2] * dt[2 * g + 1] + (l->vw[g] >= 0 ? c->col_twist[j] * v[l->vw[g]] : 0.0);
+        al[j] = along;
+        if (st == 3 && l->sp[g] >= 0 && c->col_kind[j] == BL_COL_PYRAMID)
+            v[l->sp[g]] = fmax(v[l->sp[g]], -along);
     }
     for (int j = 0; j < l->nx; j++) {
-        int q = c->col_point[j], kind = c->col_kind[j];
+        int q = c->col_point[j], g = c->lead[q], kind = c->col_kind[j];
         const double *nt = c->col_nt + st * j;
-        double along = nt[1] * dt[2 * q] + (st == 3 ? nt[2] * dt[2 * q + 1] : 0.0);
+        double along = al[j];
         if (l->cc[j] >= 0) {
             v[l->cc[j]] = fmax(c->hi[j] - x[j], 0.0);
             v[l->cc[j] + 1] = fmax(x[j] - c->lo[j], 0.0);
@@ -502,7 +538,7 @@ static void start_from(const nlp *p, const layout *l, const bl_system *c, const 
         } else if (l->zc[j] >= 0) {
             double z = nt[0] * w[l->jn[q]];
             if (kind == BL_COL_PYRAMID)
-                z += along + (l->sp[q] >= 0 ? v[l->sp[q]] : 0.0);
+                z += along + (l->sp[g] >= 0 ? v[l->sp[g]] : 0.0);
             else if (kind == BL_COL_CONE_POS || kind == BL_COL_CONE_NEG)
                 z += nonassoc ? v[l->sp[q] + (kind == BL_COL_CONE_NEG)] : along;
             v[l->zc[j]] = fmax(z, 0.0);
@@ -510,6 +546,7 @@ static void start_from(const nlp *p, const layout *l, const bl_system *c, const 
     }
     free(w);
     free(dt);
+    free(al);
 }
 
 static int run_ipopt(nlp *p, double *v, double *mult, const bl_mpec_options *o,
@@ -580,14 +617,6 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
 {
     double t0 = bl_clock();
     bl_one_thread();
-    int ra, rb;
-    if (bl_model_uses_resultant(m, &ra, &rb)) {
-        if (ra < 0)
-            return bl_error_set(err, "solve: method \"mpec\" in 3D takes the vertex model so far "
-                                     "(model{ interface = \"vertex\" })");
-        return bl_error_set(err, "solve: method \"mpec\" in 3D takes the vertex model so far "
-                                 "(interface{ %d, %d, model = \"vertex\" })", ra + 1, rb + 1);
-    }
 
     /* 3D: on the sequence's pyramid (an even number of facets: its section
      * is the fixed form's polygon of shears), from either start */

@@ -125,12 +125,36 @@ for _, row in ipairs(c3.rows) do
   rows_ok = rows_ok and row.result.verified and math.abs(row.result.alpha - 0.3) < 1e-7
 end
 T.ok(rows_ok, "compare{} on the 3D box: assoc, seqlp and mpec rows, each verified at alpha = d/h")
-model { dim = 3, mu = 0.4, interface = "resultant" }
-box { size = { 2, 2, 0.2 }, at = { 0, 0, -0.2 }, support = true }
-box { size = { 0.5, 0.3, 1.0 } }
-load { live = "horizontal" }
-T.raises(function() solve { method = "mpec" } end, "3D mpec with the resultant model is refused",
-         "mpec", "vertex model")
+-- the resultant model (a slip and a twist per joint, theory.md 6.1): the box
+-- min(mu, b/h) along x and y, and a pure torque on a unit cube, (mu N + c A)
+-- times the unit square's mean distance from its centroid, for both flows,
+-- with and without cohesion c = 0.5
+for _, case in ipairs { { 0.3, { 1, 0 }, 0.3 }, { 0.9, { 1, 0 }, 0.8 }, { 0.9, { 0, 1 }, 0.5 } } do
+  for _, flow in ipairs { "associative", "nonassociative" } do
+    model { dim = 3, mu = case[1], interface = "resultant" }
+    box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+    box { size = { 0.8, 0.5, 1 } }
+    load { live = "horizontal", direction = case[2] }
+    local r = solve { method = "mpec", flow = flow, progress = false }
+    T.ok(math.abs(r.alpha - case[3]) <= 1e-8 and r.verified and residuals_ok(r),
+         ("resultant model, box 0.8 x 0.5 x 1, mu = %g, along (%g, %g), %s mpec: %g, verified")
+           :format(case[1], case[2][1], case[2][2], flow, case[3]), ("%.10f"):format(r.alpha))
+  end
+end
+local lever = (math.sqrt(2) + math.log(1 + math.sqrt(2))) / 6
+for _, c in ipairs { 0, 0.5 } do
+  for _, flow in ipairs { "associative", "nonassociative" } do
+    model { dim = 3, mu = 0.6, density = 2, cohesion = c, interface = "resultant" }
+    box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+    box { size = { 1, 1, 1 } }
+    load { live = "none" }
+    load { live = { block = 2, moment = { 0, 0, 1 } } }
+    local r = solve { method = "mpec", flow = flow, progress = false }
+    T.ok(math.abs(r.alpha - (0.6 * 2 + c) * lever) <= 1e-8 and r.verified and residuals_ok(r),
+         ("resultant model, pure torque, cohesion %g, %s mpec: (mu N + c A) times the mean distance")
+           :format(c, flow), ("%.10f"):format(r.alpha))
+  end
+end
 
 -- Failures are statuses with the last point and its residuals.
 build(walls.W4)

@@ -504,8 +504,10 @@ T.raises(function() torque_joint("vertex", { 1, 2, mu_t = 0.1 }) end,
          "interface{ mu_t } on a vertex joint is refused", "interface", "'mu_t'", "resultant")
 T.raises(function() torque_joint("vertex", { 1, 2, model = "exact" }) end,
          "interface{ model = \"exact\" } is refused", "interface", "'model'", "\"vertex\", \"resultant\"")
-T.raises(function() torque_joint("vertex", { 1, 2, model = "resultant" }); solve { method = "mpec" } end,
-         "mpec with a resultant joint is refused, naming it", "mpec", "interface{ 1, 2, model = \"vertex\" }")
+tj = torque_joint("vertex", { 1, 2, model = "resultant" })
+local tjm = solve { method = "mpec", progress = false }
+T.ok(math.abs(tjm.alpha - 0.6 * 2 * lever) <= 1e-8 * tjm.alpha and tjm.verified,
+     "interface{ model = \"resultant\" }, the direct solve: mu N times the mean distance", ("%.10f"):format(tjm.alpha))
 for _, w in ipairs { "W1", "W4", "W5" } do
   model { mu = 0.65 }
   wall { courses = walls[w], unit = { 0.4, 0.175 } }
