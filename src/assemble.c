@@ -270,6 +270,14 @@ void bl_system_fixed_bounds(const bl_system *s, const double *n, const double *C
     }
 }
 
+void bl_system_speed(const bl_system *s, const double *w, const double *dt, const double *dt3,
+                     double *speed)
+{
+    for (int p = 0; p < s->npoints; p++) speed[p] = hypot(dt[p], dt3 ? dt3[p] : 0.0);
+    for (int j = 0; j < s->nforce; j++)
+        if (s->col_kind[j] == BL_COL_TWIST) speed[s->col_point[j]] = hypot(speed[s->col_point[j]], w[j]);
+}
+
 double bl_system_joint_opening(const bl_system *s, const double *dn, int p)
 {
     int g = s->lead[p];

@@ -120,6 +120,13 @@ void bl_system_tangent3(const bl_system *s, const double *w, double *dt, double 
 void bl_system_fixed_bounds(const bl_system *s, const double *n, const double *C, double *lo,
                             double *hi);
 
+/* For a BL_FRICTION_FIXED system, from the powers w of its columns and
+ * the tangential motion (dt, and dt3 in 3D, or NULL) of every point: how
+ * fast each point slides, |dt| and, at the lead point of a 3D resultant
+ * joint, its twist too (the twist column's power, rho omega). */
+void bl_system_speed(const bl_system *s, const double *w, const double *dt, const double *dt3,
+                     double *speed);
+
 /* How far the joint of point p opens: the largest of dn over the points
  * its lead point leads (p's own dn but in the 3D resultant model, where a
  * joint that opens anywhere loses the cohesion it carries as a whole). */

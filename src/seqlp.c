@@ -90,12 +90,7 @@ static double point_motion(run *r, const double *y)
     const bl_system *f = r->fixed;
     bl_system_point_motion(f, y, r->w, r->dn, r->dt);
     if (f->dim == 3) bl_system_tangent3(f, r->w, r->dt, r->dt3);
-    for (int p = 0; p < f->npoints; p++) r->speed[p] = hypot(r->dt[p], f->dim == 3 ? r->dt3[p] : 0.0);
-    for (int j = 0; j < f->nforce; j++)
-        if (f->col_kind[j] == BL_COL_TWIST) {
-            int p = f->col_point[j];
-            r->speed[p] = hypot(r->speed[p], r->w[j]);
-        }
+    bl_system_speed(f, r->w, r->dt, f->dim == 3 ? r->dt3 : NULL, r->speed);
     double V = 0.0;
     for (int p = 0; p < f->npoints; p++) V = fmax(V, hypot(r->dn[p], r->speed[p]));
     return V;

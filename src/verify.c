@@ -117,23 +117,17 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     double X = 0.0;
     for (int p = 0; p < np; p++) {
         X = fmax(X, fabs(n[p]));
-        speed[p] = hypot(dt[p], dt3[p]);
         power[p] = 0.0;
         h[p] = d3 ? -INFINITY : 0.0;
     }
     if (X == 0.0) X = 1.0;
-    /* 3D: per joint, the twist (a twist column's power: the torsion lever
-     * times the rotation about the normal) adds to its speed, and so to
-     * the velocity scale V.  The tangential power of a cone column, along, is its
-     * power less its normal part; the friction's dissipation is N times
-     * the most a pyramid edge resists (-along per unit normal force), plus
-     * each cohesion column's bound times |along| (the support function of
-     * the joint's yield set); the friction's power is x . along. */
-    for (int j = 0; d3 && j < fixed->nforce; j++)
-        if (fixed->col_kind[j] == BL_COL_TWIST) {
-            int p = fixed->col_point[j];
-            speed[p] = hypot(speed[p], w[j]);
-        }
+    /* the speed of every joint (with its twist) and the velocity scale V.
+     * 3D: the tangential power of a cone column, along, is its power less
+     * its normal part; the friction's dissipation is N times the most a
+     * pyramid edge resists (-along per unit normal force), plus each
+     * cohesion column's bound times |along| (the support function of the
+     * joint's yield set); the friction's power is x . along. */
+    bl_system_speed(fixed, w, dt, dt3, speed);
     double V = 0.0;
     for (int p = 0; p < np; p++) V = fmax(V, hypot(dn[p], speed[p]));
     if (V == 0.0) V = 1.0;
