@@ -25,7 +25,7 @@ for _, build in ipairs { { "facade", facade_model }, { "dome", dome_model } } do
   for _, interface in ipairs { "vertex", "resultant" } do
     build[2](interface)
     for _, cone in ipairs(cones) do
-      local r = solve { cone = cone }
+      local r = solve { flow = "associative", cone = cone }
       print(("%-8s %-10s %-14s %6d %12.6f %5d %8.2f %s%s"):format(build[1], interface, cone.kind,
             cone.facets, r.alpha, r.cone.rounds, r.timings.total, r.lp, r.verified and "" or "  NOT verified"))
     end

@@ -30,7 +30,7 @@ end
 local t1 = clock()
 local r = engine == "seqlp" and solve { flow = "nonassociative", time_limit = limit, progress = false }
   or engine == "mpec" and solve { method = "mpec", time_limit = limit, progress = false }
-  or engine == "3d" and solve { time_limit = limit }
+  or engine == "3d" and solve { flow = "associative", time_limit = limit }
   or engine == "3dseq" and solve { flow = "nonassociative", time_limit = limit, progress = false }
   or solve { flow = "associative", lp = engine, time_limit = limit }
 local t = r.timings

@@ -1023,8 +1023,7 @@ static int model_solve(lua_State *L)
     /* By default, the non-associative answer (the associative one beside
      * it) wherever a joint has finite friction.  assoc and seqlp each solve
      * one flow rule, mpec either. */
-    /* (3D models: the associative flow by default, so far) */
-    int method = choice_field(L, 2, "solve", "method", methods, m->dim == 3 ? ASSOC : SEQLP);
+    int method = choice_field(L, 2, "solve", "method", methods, SEQLP);
     int flow = choice_field(L, 2, "solve", "flow", flows, method == ASSOC ? 0 : 1);
     if (!field_given(L, 2, "method")) method = flow ? SEQLP : ASSOC;
     if (method != MPEC && method != flow)

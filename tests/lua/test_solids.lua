@@ -184,12 +184,12 @@ for _, case in ipairs { { 0.5, 1, 0.3 }, { 0.5, 1, 0.8 }, { 0.4, 0.3, 0.5 } } do
   model { dim = 3, mu = mu }
   box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
   box { size = { b, 2 * b, h } }
-  local rx = solve {}
+  local rx = solve { flow = "associative" }
   T.near(rx.alpha, math.min(mu, b / h), 1e-9,
          ("box %g x %g x %g, mu = %g, loaded along x: alpha = min(mu, b/h)"):format(b, 2 * b, h, mu))
   T.ok(rx.verified, "box along x: verified")
   load { live = "horizontal", direction = { 0, 1 } }
-  local ry = solve { cone = { facets = 4, kind = "circumscribed" } }
+  local ry = solve { flow = "associative", cone = { facets = 4, kind = "circumscribed" } }
   T.near(ry.alpha, math.min(mu, 2 * b / h), 1e-9,
          ("the same box loaded along y: alpha = min(mu, 2b/h)"))
 end
@@ -197,7 +197,7 @@ end
 model { dim = 3, mu = 0.8 }
 wall { courses = { { 1, 1, 1 }, { 1, 1, 1 }, { 1, 1, 1 }, { 1, 1, 1 } }, unit = { 0.4, 0.2 }, depth = 0.15 }
 load { live = "horizontal", direction = { 0, 1 } }
-local ow = solve {}
+local ow = solve { flow = "associative" }
 T.near(ow.alpha, 0.15 / 0.8, 1e-9, "a wall 0.15 thick and 0.8 high loaded out of plane: alpha = t/h")
 T.ok(ow.verified, "out-of-plane wall: verified")
 -- the benchmark walls extruded one block thick, loaded in their plane, give
@@ -209,7 +209,7 @@ for _, w in ipairs { "W1", "W4", "W5" } do
   model { dim = 3, mu = 0.65 }
   wall { courses = walls[w], unit = { 0.4, 0.175 }, depth = 0.2 }
   for _, cone in ipairs { { facets = 4 }, { facets = 8, kind = "circumscribed" } } do
-    local r = solve { cone = cone }
+    local r = solve { flow = "associative", cone = cone }
     T.near(r.alpha, a2, 1e-6, ("%s extruded, %d-facet %s pyramid: the 2D alpha"):format(w,
            cone.facets, cone.kind or "inscribed"))
     T.ok(r.verified, w .. " extruded: verified")
@@ -232,7 +232,7 @@ local function turned(deg)
     block { vertices = v, faces = sb.faces, support = sb.support }
   end
   load { live = "horizontal", direction = { c, s } }
-  return solve {}.alpha
+  return solve { flow = "associative" }.alpha
 end
 local a0 = turned(0)
 for _, deg in ipairs { 30, 137 } do
@@ -253,7 +253,7 @@ for _, cone in ipairs { { facets = 8 }, { facets = 4, kind = "circumscribed" } }
     block { vertices = v, faces = sb.faces, support = sb.support }
   end
   load { live = "horizontal", direction = rotate({ 1, 0, 0 }, axis, angle) }
-  T.near(solve { cone = cone }.alpha, a0, 1e-6,
+  T.near(solve { flow = "associative", cone = cone }.alpha, a0, 1e-6,
          ("W4 extruded, turned 0.7 rad about (1, 2, 3) with gravity and load, %d facets %s: alpha unchanged")
            :format(cone.facets, cone.kind or "inscribed"))
 end
@@ -300,7 +300,7 @@ for _, case in ipairs { { 4, "inscribed", 1 / math.sqrt(2) }, { 4, "circumscribe
   box { size = { 1, 1, 1 } }
   load { live = "none" }
   load { live = { block = 2, moment = { 0, 0, 1 } } }
-  local r = solve { cone = { facets = case[1], kind = case[2] } }
+  local r = solve { flow = "associative", cone = { facets = case[1], kind = case[2] } }
   T.near(r.alpha, case[3] * 0.6 * 2 * 1 / math.sqrt(2), 1e-9,
          ("pure torque on a square contact, %d facets %s: %.4f x mu N a / sqrt 2"):format(case[1],
            case[2], case[3]))
@@ -315,7 +315,7 @@ for _, k in ipairs { 3, 4 } do
   box { size = { 1, 1, 1 } }
   load { live = "none" }
   load { live = { block = 2, moment = { 0, 0, 1 } } }
-  local r = solve { cone = { facets = k, kind = "adaptive" } }
+  local r = solve { flow = "associative", cone = { facets = k, kind = "adaptive" } }
   T.near(r.alpha, 0.6 * 2 / math.sqrt(2), 1e-6,
          ("pure torque, adaptive cone from %d facets: the exact mu N a / sqrt 2 to 1e-6 (%d LPs)"):format(k, r.cone.rounds))
 end
@@ -323,9 +323,9 @@ model { dim = 3, mu = 0.3 }
 box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
 box { size = { 1, 1, 1 } }
 load { live = "horizontal", direction = { 1, 1 } }
-T.near(solve { cone = { facets = 4, kind = "adaptive" } }.alpha, 0.3, 1e-9,
+T.near(solve { flow = "associative", cone = { facets = 4, kind = "adaptive" } }.alpha, 0.3, 1e-9,
        "a box sliding along a diagonal, adaptive cone: alpha = mu")
-T.near(solve { cone = { facets = 4 } }.alpha, 0.3 / math.sqrt(2), 1e-9,
+T.near(solve { flow = "associative", cone = { facets = 4 } }.alpha, 0.3 / math.sqrt(2), 1e-9,
        "the same with the 4-facet inscribed pyramid: mu / sqrt 2")
 -- the diagonal slide turned about an arbitrary axis with gravity and load
 local axis, angle = { 2, -1, 0.5 }, 1.1
@@ -342,7 +342,7 @@ for _, spec in ipairs(spec_list) do
   block { vertices = v, faces = spec.f, support = spec[3] }
 end
 load { live = "horizontal", direction = rotate({ 1 / math.sqrt(2), 1 / math.sqrt(2), 0 }, axis, angle) }
-T.near(solve { cone = { facets = 4, kind = "adaptive" } }.alpha, 0.3, 1e-9,
+T.near(solve { flow = "associative", cone = { facets = 4, kind = "adaptive" } }.alpha, 0.3, 1e-9,
        "the diagonal slide turned about (2, -1, 0.5), adaptive cone: still alpha = mu")
 
 -- tilting: gravity turned by theta about a horizontal axis; a box that
@@ -355,7 +355,7 @@ for _, deg in ipairs { 10, 20 } do
     box { size = { 0.5, 0.5, 1 } }
     load { tilt = deg, axis = case[1], live = "horizontal", direction = case[2] }
     local th = math.rad(deg)
-    T.near(solve {}.alpha, 0.5 * math.cos(th) - math.sin(th), 1e-7,
+    T.near(solve { flow = "associative" }.alpha, 0.5 * math.cos(th) - math.sin(th), 1e-7,
            ("tilt %d degrees about {%d, %d}: alpha = (b/h) cos - sin"):format(deg, case[1][1], case[1][2]))
   end
 end
@@ -365,7 +365,7 @@ model { dim = 3, mu = 0.6 }
 box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
 box { size = { 1, 1, 1 } }
 interface { 1, 2, mu = 0.3 }
-T.near(solve {}.alpha, 0.3, 1e-9, "3D interface{ mu = 0.3 }: a cube now slides at 0.3")
+T.near(solve { flow = "associative" }.alpha, 0.3, 1e-9, "3D interface{ mu = 0.3 }: a cube now slides at 0.3")
 
 -- a joint declared by hand in 3D: a cube of side 1 on a slab (mu = 2) rocks
 -- at alpha = b/h = 1; bearing on a centred square of side 0.5 instead, it
@@ -514,7 +514,7 @@ for _, w in ipairs { "W1", "W4", "W5" } do
   local a2 = solve { flow = "associative" }.alpha
   model { dim = 3, mu = 0.65, interface = "resultant" }
   wall { courses = walls[w], unit = { 0.4, 0.175 }, depth = 0.2 }
-  local r = solve {}
+  local r = solve { flow = "associative" }
   T.ok(r.verified and math.abs(r.alpha - a2) <= 1e-6 * a2,
        w .. " extruded, resultant model: the 2D alpha, verified", ("%.10f vs %.10f"):format(r.alpha, a2))
 end
@@ -527,13 +527,13 @@ local arch2 = solve { flow = "associative" }.alpha
 model { dim = 3, mu = 0.6 }
 local vs = arch { n = 9, radius = 1, thickness = 0.15, length = 0.6, segments = 3 }
 T.eq(#vs, 27, "barrel vault: 9 voussoirs in 3 segments")
-T.near(solve {}.alpha, arch2, 1e-6, "barrel vault loaded along its span: the 2D arch's alpha")
+T.near(solve { flow = "associative" }.alpha, arch2, 1e-6, "barrel vault loaded along its span: the 2D arch's alpha")
 model { dim = 3, mu = 0.6 }
 local dv = dome { radius = 2, thickness = 0.2, rings = 3, segments = 8 }
 T.eq(#dv, 24, "dome: 3 rings of 8 voussoirs")
-local d0 = solve { cone = { kind = "adaptive" } }
+local d0 = solve { flow = "associative", cone = { kind = "adaptive" } }
 load { live = "horizontal", direction = { math.cos(math.pi / 4), math.sin(math.pi / 4) } }
-local d1 = solve { cone = { kind = "adaptive" } }
+local d1 = solve { flow = "associative", cone = { kind = "adaptive" } }
 T.ok(d0.verified and d1.verified and math.abs(d0.alpha - d1.alpha) <= 1e-6 * d0.alpha,
      "dome, loads 45 degrees apart (a symmetry turn): the same alpha with the adaptive cone",
      ("%.9f vs %.9f"):format(d0.alpha, d1.alpha))
