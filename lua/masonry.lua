@@ -18,13 +18,17 @@
 --   across x in one course and across y in the next, on a fixed base slab.
 --   Returns the block numbers and the base.
 -- bond{ length = n, courses = c, unit = {L, H}, pattern = "english",
---   openings = { {x0, x1, c0, c1}, ... }, density }: a wall one brick (L)
---   thick and n bricks (n L) long along x from the origin, c courses H high,
---   of bricks L x L/2 laid as stretchers (along x) or headers (across):
---   "english", stretcher and header courses in turn (a header course with
---   quarter-brick closers at its ends); "header", header courses only,
---   every other one with the closers; "stretcher", two leaves of stretchers
---   in running bond and no header (a collar joint between them).  An
+--   thickness = k, openings = { {x0, x1, c0, c1}, ... }, density }: a wall
+--   k bricks (k L, default 1) thick and n bricks (n L) long along x from
+--   the origin, c courses H high, of bricks L x L/2 laid as stretchers
+--   (along x) or headers (across): "english", stretcher and header courses
+--   in turn (a header course k headers deep with quarter-brick closers at
+--   its ends; a stretcher course a leaf of stretchers on either face and,
+--   between them, k - 1 headers deep, their joints half a brick from the
+--   header courses'); "header", header courses only, every other one with
+--   the closers (the joints across the thickness run through every
+--   course); "stretcher", 2 k leaves of stretchers in running bond and no
+--   header (collar joints between them).  An
 --   opening removes what lies between x0 L and x1 L in courses c0 to c1
 --   (1 = the lowest), cutting the bricks at its jambs; the course above
 --   spans it as it is.  On a fixed base slab.  Returns the block numbers
@@ -125,8 +129,9 @@ return function(M, fields)
 
   function M.bond(t)
     check("bond", t, { length = true, courses = true, unit = true, pattern = true, openings = true,
-                       density = true })
+                       thickness = true, density = true })
     local n, courses = positive_integer("bond", t, "length", 2), positive_integer("bond", t, "courses")
+    local k = t.thickness == nil and 1 or positive_integer("bond", t, "thickness")
     local u = number_list("bond", t, "unit", 2, true)
     local L, H = u[1], u[2]
     local pattern = t.pattern or "english"
@@ -160,20 +165,28 @@ return function(M, fields)
         end
       end
       local header = pattern == "header" or (pattern == "english" and c % 2 == 0)
-      if header then
+      local function headers(closers)
         local w = {}
-        local closers = pattern == "english" or c % 2 == 0
         if closers then w[1] = 0.25 end
         for _ = 1, closers and 2 * n - 1 or 2 * n do w[#w + 1] = 0.5 end
         if closers then w[#w + 1] = 0.25 end
-        run(0, w, 0, 1)
-      else -- two leaves of stretchers, running bond from course to course
+        return w
+      end
+      if header then
+        local w = headers(pattern == "english" or c % 2 == 0)
+        for j = 0, k - 1 do run(0, w, j, j + 1) end
+      else -- leaves of stretchers, running bond from course to course
         local w = {}
         if pattern == "stretcher" and c % 2 == 0 then w[1] = 0.5 end
         for _ = 1, (pattern == "stretcher" and c % 2 == 0) and n - 1 or n do w[#w + 1] = 1 end
         if pattern == "stretcher" and c % 2 == 0 then w[#w + 1] = 0.5 end
-        run(0, w, 0, 0.5)
-        run(0, w, 0.5, 1)
+        if pattern == "stretcher" then
+          for j = 0, 2 * k - 1 do run(0, w, j / 2, (j + 1) / 2) end
+        else -- english: a face leaf on either side, headers between
+          run(0, w, 0, 0.5)
+          for j = 0, k - 2 do run(0, headers(false), 0.5 + j, 1.5 + j) end
+          run(0, w, k - 0.5, k)
+        end
       end
       for _, o in ipairs(openings) do
         if c >= o[3] and c <= o[4] then
@@ -198,7 +211,8 @@ return function(M, fields)
                                       density = t.density }
       end
     end
-    local base = M.box { size = { (n + 1) * L, 2 * L, H }, at = { n * L / 2, L / 2, -H }, support = true }
+    local base = M.box { size = { (n + 1) * L, (k + 1) * L, H }, at = { n * L / 2, k * L / 2, -H },
+                         support = true }
     return blocks, base
   end
 end

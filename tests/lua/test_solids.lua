@@ -716,6 +716,32 @@ local ovol = 0
 for _, k in ipairs(ob) do ovol = ovol + current():block_info(k).volume end
 T.near(ovol, 6 * 0.4 * 0.4 * 1.0 - 2 * 0.4 * 0.4 * 0.5, 1e-12,
        "bond{} with an opening 0.8 wide through 5 courses: the wall's volume less the opening's")
+-- thickness = 2 bricks (0.8): the bricks tile the wall (volume 6 x 0.4 x
+-- 0.8 x 1.0); pushed out of its plane, rocking as one piece bounds alpha
+-- by t/h = 0.8, which it reaches with ample friction (mu = 5: a joint
+-- between leaves cannot slide without opening at the friction angle); at
+-- mu = 0.65 a header bond's outer leaf could overturn alone at 0.4 if the
+-- joint between the leaves slid without opening (the non-associative flow;
+-- the sequence and 10 restarts found 0.4776 and 0.4250, doc/guide.md)
+for _, pat in ipairs { "english", "header", "stretcher" } do
+  for _, mu in ipairs { 0.65, 5 } do
+    model { dim = 3, mu = mu }
+    local bb = bond { length = 6, courses = 10, unit = { 0.4, 0.1 }, pattern = pat, thickness = 2 }
+    local vol = 0
+    for _, b in ipairs(bb) do vol = vol + current():block_info(b).volume end
+    load { live = "horizontal", direction = { 0, 1 } }
+    local r = solve { flow = "associative" }
+    if pat == "english" and mu == 5 then
+      T.eq(#bb, 5 * 2 * 13 + 5 * (2 * 6 + 12), "bond{ english, thickness = 2 }: 250 bricks in 10 courses")
+    end
+    T.ok(math.abs(vol - 1.92) <= 1e-12 and r.verified and r.alpha <= 0.8 * (1 + 1e-9)
+         and (mu < 5 or math.abs(r.alpha - 0.8) <= 1e-7),
+         ("bond{ %s, thickness = 2 }, mu = %g: the bricks fill the wall; out of plane, verified, %s t/h = 0.8")
+           :format(pat, mu, mu < 5 and "at most" or "exactly"), ("%.6f, volume %.12f"):format(r.alpha, vol))
+  end
+end
+T.raises(function() bond { length = 6, courses = 2, unit = { 0.4, 0.1 }, thickness = 1.5 } end,
+         "bond{ thickness = 1.5 } is refused", "bond: field 'thickness'")
 T.raises(function() bond { length = 6, courses = 2, unit = { 0.4, 0.1 }, pattern = "flemish" } end,
          "bond{ pattern = \"flemish\" } is refused", "bond: field 'pattern'")
 T.raises(function() bond { length = 6, courses = 2, unit = { 0.4, 0.1 }, openings = { { 5, 7, 1, 1 } } } end,
