@@ -272,11 +272,13 @@ static void push_triple(lua_State *L, bl_vec3 p)
 
 /* ---- model -------------------------------------------------------------- */
 
+/* How a 3D interface carries force: names of bl_interface_model, in order. */
+static const char *const interface_models[] = {"vertex", "resultant", NULL};
+
 static int model_new(lua_State *L)
 {
     static const char *const fields[] = {"name", "dim", "mu", "cohesion", "density",
                                          "thickness", "gravity", "interface", "mu_t", NULL};
-    static const char *const interface_models[] = {"vertex", "resultant", NULL};
     check_fields(L, 1, "model", fields, 0);
     double dim = number_field(L, 1, "model", "dim", 2, POSITIVE);
     if (dim != 2 && dim != 3) fail(L, "model: field 'dim' must be 2 or 3, got %g", dim);
@@ -484,7 +486,6 @@ static int model_contacts(lua_State *L)
 static int model_interface(lua_State *L)
 {
     static const char *const fields[] = {"mu", "cohesion", "points", "model", "mu_t", NULL};
-    static const char *const interface_models[] = {"vertex", "resultant", NULL};
     bl_model *m = check_model(L, 1);
     check_fields(L, 2, "interface", fields, 2);
     bl_joint_spec s = {0};
