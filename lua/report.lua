@@ -41,6 +41,10 @@ function Result.__tostring(r)
     say("  complementarity by %s, started from %s%s; sum of products %s", i.complementarity,
         i.start, i.alpha_start == i.alpha_start and (" (alpha %.6g)"):format(i.alpha_start) or "",
         g(i.pairs))
+    if i.kept_start then
+      say("  Ipopt's point (alpha %.6g) is not a lower verified answer: the start's certified", i.alpha)
+      say("  answer stands")
+    end
   else
     say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
         r.lp, r.iterations, size.rows, size.columns)

@@ -873,12 +873,14 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         }
     }
     if (strcmp(s->method, "mpec") == 0) {
-        lua_createtable(L, 0, 5);
+        lua_createtable(L, 0, 7);
         set_string(L, "status", s->nlp_status);
         set_string(L, "complementarity", s->comp);
         set_string(L, "start", s->start_kind);
         set_number(L, "alpha_start", s->alpha_start);
         set_number(L, "pairs", s->pair_sum);
+        set_number(L, "alpha", s->alpha_ipopt);
+        set_boolean(L, "kept_start", s->kept_start);
         lua_setfield(L, -2, "ipopt");
         if (strcmp(s->flow, "nonassociative") == 0) set_number(L, "slip", s->slip);
     }

@@ -613,6 +613,31 @@ static bl_status status_of(enum ApplicationReturnStatus r)
     }
 }
 
+/* Reads the point v of the program into s: alpha, forces (xa, the cone
+ * system's columns and alpha), mechanism, joint states, residuals and
+ * s->verified. */
+static void answer_from(bl_solution *s, const double *v, const layout *l, const bl_system *c,
+                        const bl_system *f, int nonassoc, const bl_mpec_options *o, double *xa)
+{
+    const bl_model *mc = s->model;
+    s->alpha = v[0];
+    memcpy(xa, v + l->x0, (size_t)l->nx * sizeof *xa);
+    xa[l->nx] = v[0];
+    s->has_mechanism = 1;
+    s->res.flow = s->res.dilatancy = NAN; /* set by the non-associative check only */
+    if (mc->dim == 3) {
+        bl_system_forces3(c, xa, s->force);
+        bl_system_mechanism3(c, mc, v + l->u0, s->u);
+    } else {
+        bl_system_forces(c, mc, xa, s->force);
+        bl_system_mechanism(c, mc, v + l->u0, s->u);
+    }
+    bl_solution_classify(s);
+    s->verified = nonassoc ? bl_verify_nonassoc(c, f, s->alpha, xa, v + l->u0, o->seq.base.tolerance,
+                                                o->seq.slip, &s->res)
+                           : bl_verify(c, s->alpha, xa, v + l->u0, o->seq.base.tolerance, &s->res);
+}
+
 int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_error *err)
 {
     double t0 = bl_clock();
@@ -661,7 +686,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
                         : bl_system_build(mc, BL_FRICTION_FIXED, err);
     nlp p = {0};
     layout l = {0};
-    double *v = NULL, *mult = NULL;
+    double *v = NULL, *v0 = NULL, *mult = NULL;
     if (!f) goto fail;
     int nonassoc = o->nonassociative;
     double eps0 = o->comp == BL_MPEC_PENALTY ? 0.0 : 1e-2;
@@ -671,6 +696,12 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     mult = calloc((size_t)p.m + 2 * (size_t)p.n, sizeof *mult);
     if (!v || !mult) goto oom;
     if (o->start != BL_MPEC_START_COLD) start_from(&p, &l, c, f, s->x, s->y, nonassoc, v);
+    /* a certified start (the sequence's answer), kept */
+    if (o->start == BL_MPEC_START_SEQLP && s->certified) {
+        v0 = malloc((size_t)p.n * sizeof *v0);
+        if (!v0) goto oom;
+        memcpy(v0, v, (size_t)p.n * sizeof *v0);
+    }
     if (o->seq.base.verbose) {
         double sum = 0.0, big = 0.0;
         int kbig = -1;
@@ -699,7 +730,13 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     }
     double t2 = bl_clock();
 
-    /* the answer, or the last point, with its residuals */
+    /* the answer, or the last point, with its residuals; when Ipopt
+     * converged to a point that is not a verified answer below a certified
+     * start, the start's point: Eq. 12 asks for the lowest alpha, and the
+     * start already solves it (Ipopt's push into the interior can lose the
+     * start and end higher, or at a point that is not complementary,
+     * doc/mpec.md).  Ipopt's failures (limits, numerical trouble) stay
+     * statuses. */
     s->method = "mpec";
     s->flow = nonassoc ? "nonassociative" : "associative";
     s->status = status_of(r);
@@ -711,34 +748,29 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     s->comp = o->comp == BL_MPEC_PENALTY ? "penalty"
               : o->comp == BL_MPEC_RELAXATION ? "relaxation" : "homotopy";
     s->start_kind = start_kind;
-    s->pair_sum = 0.0;
-    for (int k = 0; k < p.npairs; k++) s->pair_sum += fabs(v[p.pa[k]] * v[p.pb[k]]);
     s->rows = p.m;
     s->cols = p.n;
     s->lp = "ipopt";
     s->factor_nnz = 0.0;
     s->certified = 0;
     s->slip = o->seq.slip;
+    s->alpha_ipopt = v[0];
+    s->kept_start = 0;
     double *xa = malloc(((size_t)l.nx + 1) * sizeof *xa);
     if (!xa) goto oom;
-    memcpy(xa, v + l.x0, (size_t)l.nx * sizeof *xa);
-    xa[l.nx] = v[0];
-    s->has_mechanism = 1;
-    s->res.flow = s->res.dilatancy = NAN; /* set by the non-associative check only */
-    if (d3) {
-        bl_system_forces3(c, xa, s->force);
-        bl_system_mechanism3(c, mc, v + l.u0, s->u);
-    } else {
-        bl_system_forces(c, mc, xa, s->force);
-        bl_system_mechanism(c, mc, v + l.u0, s->u);
-    }
-    bl_solution_classify(s);
-    s->verified = nonassoc ? bl_verify_nonassoc(c, f, s->alpha, xa, v + l.u0, o->seq.base.tolerance,
-                                                o->seq.slip, &s->res)
-                           : bl_verify(c, s->alpha, xa, v + l.u0, o->seq.base.tolerance, &s->res);
-    if (s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) s->verified = 0;
+    answer_from(s, v, &l, c, f, nonassoc, o, xa);
+    int converged = s->status == BL_OPTIMAL || s->status == BL_UNSTABLE;
+    if (!converged) s->verified = 0;
     else if (!s->verified) s->status = BL_NOT_COMPLEMENTARY;
-    int kept = bl_solution_keep(s, xa, l.nx + 1, v + l.u0, l.nu);
+    if (v0 && converged && (!s->verified || s->alpha > alpha_start)) {
+        answer_from(s, v0, &l, c, f, nonassoc, o, xa);
+        s->kept_start = 1;
+        s->status = !s->verified ? BL_NOT_COMPLEMENTARY : s->alpha < 0.0 ? BL_UNSTABLE : BL_OPTIMAL;
+    }
+    const double *end = s->kept_start ? v0 : v;
+    s->pair_sum = 0.0;
+    for (int k = 0; k < p.npairs; k++) s->pair_sum += fabs(end[p.pa[k]] * end[p.pb[k]]);
+    int kept = bl_solution_keep(s, xa, l.nx + 1, end + l.u0, l.nu);
     free(xa);
     if (kept) goto oom;
     /* the start's own solve and checks count as solving; building the
@@ -752,6 +784,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     nlp_free(&p);
     layout_free(&l);
     free(v);
+    free(v0);
     free(mult);
     bl_system_free(c);
     bl_system_free(f);
@@ -763,6 +796,7 @@ fail:
     nlp_free(&p);
     layout_free(&l);
     free(v);
+    free(v0);
     free(mult);
     bl_system_free(c);
     bl_system_free(f);

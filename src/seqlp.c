@@ -96,13 +96,54 @@ static double point_motion(run *r, const double *y)
     return V;
 }
 
-/* The certificate: at alpha, forces in Coulomb's cone that fit the
- * mechanism y of the last LP: none where a point opens, on the cone's edge
- * against the slip where it slides, anywhere in the cone where it stays
- * closed.  Returns the LP status; the forces are bl_lp_primal(lp_cone). */
-static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
-                            const bl_solve_options *o, bl_error *err)
+/* Solves the certificate LP with the bounds in clo, chi (creating it the
+ * first time): the interior point, or the simplex where the interior point
+ * does not converge.  Counts it in s. */
+static bl_lp_status certificate_lp(run *r, const bl_solve_options *o, bl_solution *s,
+                                   bl_error *err)
 {
+    const bl_system *c = r->cone;
+    /* the objective: the lowest alpha */
+    for (int j = 0; j < c->ncols; j++) r->obj[j] = j == c->nforce ? -1.0 : 0.0;
+    if (!r->lp_cone) {
+        r->lp_cone = bl_solve_lp(c, r->clo, r->chi, r->obj, o, err);
+        if (!r->lp_cone) return BL_LP_FAILED;
+    } else {
+        bl_lp_set_bounds(r->lp_cone, r->clo, r->chi);
+    }
+    bl_lp_status st = bl_lp_solve(r->lp_cone);
+    if ((st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) &&
+        strcmp(bl_lp_engine(r->lp_cone), "ipm") == 0) {
+        /* At the settled alpha the certificate's feasible set can be a
+         * single point, which an interior point approaches without
+         * converging (met on a stack-bond wall): the simplex decides it. */
+        bl_solve_options so = *o;
+        so.lp = BL_LP_SIMPLEX;
+        bl_lp_free(r->lp_cone);
+        r->lp_cone = bl_solve_lp(c, r->clo, r->chi, r->obj, &so, err);
+        if (!r->lp_cone) return BL_LP_FAILED;
+        st = bl_lp_solve(r->lp_cone);
+    }
+    s->lps++;
+    s->iterations += bl_lp_iterations(r->lp_cone);
+    return st;
+}
+
+/* The certificate: forces in Coulomb's cone that fit the mechanism y of
+ * the last LP: none where a point opens, on the cone's edge against the
+ * slip where it slides, anywhere in the cone where it stays closed; with
+ * them the mechanism solves the seed's Eq. 12.  Eq. 12 asks for the lowest
+ * alpha, and with the mechanism held the lowest alpha such forces carry is
+ * an LP: the certificate solves it, and keeps it when it passes the checks
+ * of bl_verify_nonassoc; else (unbounded, or a force field that leans on
+ * motions below the slip threshold) it looks for forces at the LP's alpha,
+ * the settled one.  Returns the LP status, with the certified alpha in
+ * *cert; the forces are bl_lp_primal(lp_cone). */
+static bl_lp_status certify(run *r, double alpha, const double *y, const bl_seqlp_options *so,
+                            bl_solution *s, double *cert, bl_error *err)
+{
+    const bl_solve_options *o = &so->base;
+    double slip = so->slip;
     const bl_system *c = r->cone;
     double V = point_motion(r, y);
     /* 3D: the power of every column of the cone (the tangential part,
@@ -151,27 +192,19 @@ static bl_lp_status certify(run *r, double alpha, const double *y, double slip,
         r->clo[j] = lo;
         r->chi[j] = hi;
     }
-    r->clo[c->nforce] = r->chi[c->nforce] = alpha;
-    if (!r->lp_cone) {
-        r->lp_cone = bl_solve_lp(c, r->clo, r->chi, NULL, o, err);
-        if (!r->lp_cone) return BL_LP_FAILED;
-    } else {
-        bl_lp_set_bounds(r->lp_cone, r->clo, r->chi);
+    r->clo[c->nforce] = -INFINITY;
+    r->chi[c->nforce] = INFINITY;
+    bl_lp_status st = certificate_lp(r, o, s, err);
+    if (st == BL_LP_OPTIMAL) {
+        bl_residuals res;
+        *cert = bl_lp_primal(r->lp_cone)[c->nforce];
+        if (bl_verify_nonassoc(c, r->fixed, *cert, bl_lp_primal(r->lp_cone), y, o->tolerance,
+                               slip, &res))
+            return st;
     }
-    bl_lp_status st = bl_lp_solve(r->lp_cone);
-    if ((st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) &&
-        strcmp(bl_lp_engine(r->lp_cone), "ipm") == 0) {
-        /* At the settled alpha the certificate's feasible set can be a
-         * single point, which an interior point approaches without
-         * converging (met on a stack-bond wall): the simplex decides it. */
-        bl_solve_options so = *o;
-        so.lp = BL_LP_SIMPLEX;
-        bl_lp_free(r->lp_cone);
-        r->lp_cone = bl_solve_lp(c, r->clo, r->chi, NULL, &so, err);
-        if (!r->lp_cone) return BL_LP_FAILED;
-        st = bl_lp_solve(r->lp_cone);
-    }
-    return st;
+    if (st != BL_LP_OPTIMAL && st != BL_LP_UNBOUNDED) return st;
+    r->clo[c->nforce] = r->chi[c->nforce] = *cert = alpha;
+    return certificate_lp(r, o, s, err);
 }
 
 static int append(bl_solution *s, double a)
@@ -262,14 +295,13 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
             r->shown = 1;
         }
         if (fabs(a - prev) <= o->settle * fabs(a)) {
-            bl_lp_status cs = certify(r, a, y, o->slip, &o->base, err);
-            s->lps++;
-            if (r->lp_cone) s->iterations += bl_lp_iterations(r->lp_cone);
+            double ac;
+            bl_lp_status cs = certify(r, a, y, o, s, &ac, err);
             if (cs == BL_LP_FAILED && !r->lp_cone) return -1;
             if (cs == BL_LP_OPTIMAL) {
-                if (!r->found || a < r->best_alpha) {
+                if (!r->found || ac < r->best_alpha) {
                     r->found = 1;
-                    r->best_alpha = a;
+                    r->best_alpha = ac;
                     memcpy(r->best_x, bl_lp_primal(r->lp_cone),
                            (size_t)r->cone->ncols * sizeof *r->best_x);
                     memcpy(r->best_y, y, (size_t)f->nrows * sizeof *r->best_y);

@@ -105,6 +105,9 @@ typedef struct bl_solution {
     const char *comp;        /* "penalty", "relaxation" or "homotopy", static */
     const char *start_kind;  /* where it started ("cold", "assoc", "seqlp"), static */
     double pair_sum;         /* sum of the complementary products at the end */
+    double alpha_ipopt;      /* alpha of Ipopt's last point */
+    int kept_start;          /* Ipopt's point was not a lower verified answer than
+                                the certified start, which is the answer */
 } bl_solution;
 
 /* A solution for the model copy c (taken over: freed with the solution, or

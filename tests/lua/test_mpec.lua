@@ -156,6 +156,19 @@ for _, c in ipairs { 0, 0.5 } do
   end
 end
 
+-- From the sequence's certified answer Ipopt's push into the interior can
+-- lose it: on W5 Ipopt converges to 0.21140, a point that is not
+-- complementary, above the start's 0.20930.  The start then stands.
+build(walls.W5)
+local seq = solve {}
+local m5 = solve { method = "mpec" }
+T.ok(m5.status == "optimal" and m5.verified and m5.alpha <= seq.alpha * (1 + 1e-9),
+     "W5: the mpec answer is verified and not above the sequence's certified start",
+     ("%s %.6f vs %.6f"):format(m5.status, m5.alpha, seq.alpha))
+T.ok(not m5.ipopt.kept_start or (m5.alpha == seq.alpha and m5.ipopt.alpha == m5.ipopt.alpha),
+     "W5: when the start stands, alpha is the start's and Ipopt's own alpha is reported",
+     ("%s %.6f"):format(tostring(m5.ipopt.kept_start), m5.ipopt.alpha))
+
 -- Failures are statuses with the last point and its residuals.
 build(walls.W4)
 local stopped = solve { method = "mpec", iterations = 3 }
