@@ -198,9 +198,14 @@ static bl_lp_status certify(run *r, double alpha, const double *y, const bl_seql
     if (st == BL_LP_OPTIMAL) {
         bl_residuals res;
         *cert = bl_lp_primal(r->lp_cone)[c->nforce];
-        if (bl_verify_nonassoc(c, r->fixed, *cert, bl_lp_primal(r->lp_cone), y, o->tolerance,
-                               slip, &res))
-            return st;
+        int ok = bl_verify_nonassoc(c, r->fixed, *cert, bl_lp_primal(r->lp_cone), y,
+                                    o->tolerance, slip, &res);
+        if (o->verbose)
+            fprintf(stderr, "seqlp certificate: lowest alpha %.8g, %s\n", *cert,
+                    ok ? "verified" : "not verified: at the LP's alpha");
+        if (ok) return st;
+    } else if (o->verbose) {
+        fprintf(stderr, "seqlp certificate: %s\n", st == BL_LP_INFEASIBLE ? "infeasible" : "no lowest alpha");
     }
     if (st != BL_LP_OPTIMAL && st != BL_LP_UNBOUNDED) return st;
     r->clo[c->nforce] = r->chi[c->nforce] = *cert = alpha;

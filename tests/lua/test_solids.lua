@@ -722,7 +722,7 @@ T.near(ovol, 6 * 0.4 * 0.4 * 1.0 - 2 * 0.4 * 0.4 * 0.5, 1e-12,
 -- between leaves cannot slide without opening at the friction angle); at
 -- mu = 0.65 a header bond's outer leaf could overturn alone at 0.4 if the
 -- joint between the leaves slid without opening (the non-associative flow;
--- the sequence and 10 restarts found 0.4776 and 0.4250, doc/guide.md)
+-- one start of the sequence certifies 0.4000, doc/guide.md)
 for _, pat in ipairs { "english", "header", "stretcher" } do
   for _, mu in ipairs { 0.65, 5 } do
     model { dim = 3, mu = mu }
