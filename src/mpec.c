@@ -696,8 +696,8 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     mult = calloc((size_t)p.m + 2 * (size_t)p.n, sizeof *mult);
     if (!v || !mult) goto oom;
     if (o->start != BL_MPEC_START_COLD) start_from(&p, &l, c, f, s->x, s->y, nonassoc, v);
-    /* a certified start (the sequence's answer), kept */
-    if (o->start == BL_MPEC_START_SEQLP && s->certified) {
+    /* a certified start (the sequence's answer to the same problem), kept */
+    if (o->start == BL_MPEC_START_SEQLP && s->certified && nonassoc) {
         v0 = malloc((size_t)p.n * sizeof *v0);
         if (!v0) goto oom;
         memcpy(v0, v, (size_t)p.n * sizeof *v0);
