@@ -850,6 +850,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     if (strcmp(s->method, "seqlp") == 0) {
         set_number(L, "alpha_assoc", s->alpha_assoc);
         set_number(L, "alpha_rigid", s->alpha_rigid);
+        if (s->certified) set_number(L, "alpha_settled", s->alpha_settled);
         set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
         set_boolean(L, "certified", s->certified);
         set_boolean(L, "interrupted", s->interrupted);

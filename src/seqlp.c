@@ -35,7 +35,7 @@ typedef struct run {
     int iterations;        /* of the random-state LPs */
     int shown;             /* a progress line is on the screen */
     int found;             /* a certified answer is kept in best_* */
-    double best_alpha, *best_x, *best_y;
+    double best_alpha, best_settled, *best_x, *best_y;
 } run;
 
 static void run_free(run *r)
@@ -307,6 +307,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
                 if (!r->found || ac < r->best_alpha) {
                     r->found = 1;
                     r->best_alpha = ac;
+                    r->best_settled = a;
                     memcpy(r->best_x, bl_lp_primal(r->lp_cone),
                            (size_t)r->cone->ncols * sizeof *r->best_x);
                     memcpy(r->best_y, y, (size_t)f->nrows * sizeof *r->best_y);
@@ -537,6 +538,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     }
     if (r.found) {
         s->alpha = r.best_alpha;
+        s->alpha_settled = r.best_settled;
         s->status = s->alpha < 0.0 ? BL_UNSTABLE : BL_OPTIMAL;
         s->certified = 1;
         if (mc->dim == 3) {

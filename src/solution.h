@@ -89,6 +89,8 @@ typedef struct bl_solution {
     const char *flow;        /* "associative" or "nonassociative", static */
     double alpha_assoc;      /* the associative multiplier */
     double alpha_rigid;      /* ... with unlimited friction (INFINITY: unbounded) */
+    double alpha_settled;    /* the alpha of the LP whose mechanism the answer's
+                                certificate holds (the answer is at or below it) */
     int assoc_is_solution;   /* alpha_assoc = alpha_rigid: friction limits nothing */
     int certified;           /* a certificate LP accepted (alpha, x, u) */
     int interrupted;         /* Ctrl-C ended the search early */
