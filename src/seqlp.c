@@ -97,11 +97,12 @@ static double point_motion(run *r, const double *y)
 }
 
 /* Solves the certificate LP with the bounds in clo, chi (creating it the
- * first time): the interior point, or the simplex where the interior point
- * does not converge.  Counts it in s. */
+ * first time): the interior point, or, with alpha fixed, the simplex where
+ * the interior point does not converge.  Counts it in s. */
 static bl_lp_status certificate_lp(run *r, const bl_solve_options *o, bl_solution *s,
                                    bl_error *err)
 {
+    int fixed = r->clo[r->cone->nforce] == r->chi[r->cone->nforce];
     const bl_system *c = r->cone;
     /* the objective: the lowest alpha */
     for (int j = 0; j < c->ncols; j++) r->obj[j] = j == c->nforce ? -1.0 : 0.0;
@@ -112,11 +113,13 @@ static bl_lp_status certificate_lp(run *r, const bl_solve_options *o, bl_solutio
         bl_lp_set_bounds(r->lp_cone, r->clo, r->chi);
     }
     bl_lp_status st = bl_lp_solve(r->lp_cone);
-    if ((st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) &&
+    if (fixed && (st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) &&
         strcmp(bl_lp_engine(r->lp_cone), "ipm") == 0) {
         /* At the settled alpha the certificate's feasible set can be a
          * single point, which an interior point approaches without
-         * converging (met on a stack-bond wall): the simplex decides it. */
+         * converging (met on a stack-bond wall): the simplex decides it.
+         * With alpha free the certificate at the settled alpha comes
+         * next instead (the simplex took minutes on large 3D models). */
         bl_solve_options so = *o;
         so.lp = BL_LP_SIMPLEX;
         bl_lp_free(r->lp_cone);
@@ -222,8 +225,15 @@ static bl_lp_status certificate(run *r, double alpha, const double *y,
     } else if (o->verbose) {
         fprintf(stderr, "seqlp certificate: %s\n", st == BL_LP_INFEASIBLE ? "infeasible" : "no lowest alpha");
     }
-    if (st != BL_LP_OPTIMAL && st != BL_LP_UNBOUNDED) return st;
+    if (st != BL_LP_OPTIMAL && st != BL_LP_UNBOUNDED && st != BL_LP_ITERATION_LIMIT &&
+        st != BL_LP_FAILED)
+        return st;
     r->clo[na] = r->chi[na] = *cert = alpha;
+    /* from scratch: the interior point re-solving from the lowest alpha's
+     * path did not converge on the 3D 4,935-block wall (and handed the LP
+     * to the simplex, for minutes) */
+    bl_lp_free(r->lp_cone);
+    r->lp_cone = NULL;
     st = certificate_lp(r, o, s, err);
     if (st == BL_LP_OPTIMAL) *ok = verified(r, alpha, y, so);
     return st;
