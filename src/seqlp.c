@@ -255,8 +255,9 @@ static bl_lp_status certify(run *r, double alpha, const double *y, const bl_seql
     certificate_bounds(r, y, so->slip);
     bl_lp_status st = certificate(r, alpha, y, so, s, cert, &ok, err);
     if (st != BL_LP_OPTIMAL || ok) return st;
-    for (double f = 0.1; f >= 0.01; f *= 0.1) {
-        certificate_bounds(r, y, f * so->slip);
+    static const double finer[] = {0.1, 0.01};
+    for (int k = 0; k < 2; k++) {
+        certificate_bounds(r, y, finer[k] * so->slip);
         bl_lp_status sf = certificate(r, alpha, y, so, s, cert, &ok, err);
         if (sf == BL_LP_OPTIMAL && ok) return sf;
         if (sf == BL_LP_FAILED && !r->lp_cone) return sf;
