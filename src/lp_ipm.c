@@ -264,7 +264,8 @@ static void set_bounds(void *e, const double *lo, const double *hi)
 static double inf_norm(const double *a, int n)
 {
     double r = 0.0;
-    for (int i = 0; i < n; i++) r = fmax(r, fabs(a[i]));
+    for (int i = 0; i < n; i++)
+        if (fabs(a[i]) > r) r = fabs(a[i]);
     return r;
 }
 
@@ -411,8 +412,8 @@ static int refine(ipm *p, step *d, double gv)
         double en = 0.0, rn = 0.0;
         for (int i = 0; i < m; i++) {
             p->tmp[i] = p->rp[i] - p->tmp[i] - p->g[i] * d->a;
-            en = fmax(en, fabs(p->tmp[i]));
-            rn = fmax(rn, fabs(p->rp[i]));
+            if (fabs(p->tmp[i]) > en) en = fabs(p->tmp[i]);
+            if (fabs(p->rp[i]) > rn) rn = fabs(p->rp[i]);
         }
         if (en <= 1e-14 * (1.0 + rn)) break;
         if (msolve(p, p->tmp, NULL)) return -1;
@@ -446,8 +447,8 @@ static double max_step(const ipm *p, const double *v1, const double *d1, const d
     int n = p->n;
     PAR_FOR_WITH(reduction(min : t))
     for (int j = 0; j < n; j++) {
-        if (d1[j] < 0.0) t = fmin(t, -v1[j] / d1[j]);
-        if (p->kind[j] == COL_BOXED && d2[j] < 0.0) t = fmin(t, -v2[j] / d2[j]);
+        if (d1[j] < 0.0 && -v1[j] / d1[j] < t) t = -v1[j] / d1[j];
+        if (p->kind[j] == COL_BOXED && d2[j] < 0.0 && -v2[j] / d2[j] < t) t = -v2[j] / d2[j];
     }
     return t;
 }
@@ -708,11 +709,11 @@ static bl_lp_status solve(void *e)
             PAR_FOR
             for (int j = 0; j < n; j++) {
                 double v = (p->x[j] + ttp * d->x[j]) * (p->z[j] + ttd * d->z[j]);
-                p->xz[j] = v < lo ? lo - v : v > hi ? fmax(hi - v, -hi) : 0.0;
+                p->xz[j] = v < lo ? lo - v : v > hi ? (v < 2.0 * hi ? hi - v : -hi) : 0.0;
                 if (p->sw) p->sw[j] = 0.0;
                 if (p->kind[j] == COL_BOXED) {
                     v = (p->s[j] + ttp * d->s[j]) * (p->w[j] + ttd * d->w[j]);
-                    p->sw[j] = v < lo ? lo - v : v > hi ? fmax(hi - v, -hi) : 0.0;
+                    p->sw[j] = v < lo ? lo - v : v > hi ? (v < 2.0 * hi ? hi - v : -hi) : 0.0;
                 }
             }
             step *c = &p->cor;
@@ -754,11 +755,11 @@ static bl_lp_status solve(void *e)
             for (int j = 0; j < n; j++) {
                 double v = (p->x[j] + tp * d->x[j]) * (p->z[j] + td * d->z[j]);
                 sum += v;
-                low = fmin(low, v);
+                if (v < low) low = v;
                 if (p->kind[j] == COL_BOXED) {
                     v = (p->s[j] + tp * d->s[j]) * (p->w[j] + td * d->w[j]);
                     sum += v;
-                    low = fmin(low, v);
+                    if (v < low) low = v;
                 }
             }
             if (low >= 0.01 * sum / (double)(n + nbox > 0 ? n + nbox : 1)) break;
