@@ -1,5 +1,5 @@
 /* gomp_serial.c - a parallel region that runs on one thread anyway, run as
- * a plain call, in the blocklim executable.
+ * a plain call, in the blocklim executable and the Lua module.
  *
  * GCC compiles "#pragma omp parallel" into a call of GOMP_parallel(fn,
  * data, num_threads, flags) (libgomp's documented ABI, "Implementing the
@@ -11,10 +11,12 @@
  * (doc/performance.md, "Threads"): 3,000 futex calls per interior-point
  * iteration at 1,040 blocks, a fifth of the solve's time in the kernel.
  *
- * This definition takes precedence over libgomp's for the whole process
- * (the executable exports it; meson.build).  Outside any parallel region,
- * a region that would get one thread (an if clause that is false, one
- * thread asked or allowed, or no active level left) is fn(data) itself:
+ * This definition takes precedence over libgomp's: for the whole process
+ * when the executable exports it (meson.build), and for the libraries the
+ * Lua module loads, which look in the module before libgomp.  Outside any
+ * parallel region, a region that would get one thread (an if clause that
+ * is false, one thread asked or allowed, or no active level left) is
+ * fn(data) itself:
  * there omp_get_thread_num() is 0 and omp_get_num_threads() 1 as in a
  * team of one, and a nested region behaves as it would inside that
  * inactive team.  Inside a parallel region fn reads the enclosing team's
