@@ -8,18 +8,18 @@
  * whose last thread wakes the others by a futex system call.  CHOLMOD's
  * supernodal factorization has such regions on every supernode, small
  * ones behind an if clause, and blocklim keeps them all on one thread
- * (doc/performance.md, "Threads"): 3,000 futex calls per interior-point
- * iteration at 1,040 blocks, a fifth of the solve's time in the kernel.
+ * (doc/performance.md, "Threads" and "Regions of one thread"): 3,000
+ * futex calls per interior-point iteration at 1,040 blocks, a fifth of the
+ * solve's time in the kernel.
  *
  * This definition takes precedence over libgomp's: for the whole process
  * when the executable exports it (meson.build), and for the libraries the
  * Lua module loads, which look in the module before libgomp.  Outside any
  * parallel region, a region that would get one thread (an if clause that
  * is false, one thread asked or allowed, or no active level left) is
- * fn(data) itself:
- * there omp_get_thread_num() is 0 and omp_get_num_threads() 1 as in a
- * team of one, and a nested region behaves as it would inside that
- * inactive team.  Inside a parallel region fn reads the enclosing team's
+ * fn(data) itself: there omp_get_thread_num() is 0 and
+ * omp_get_num_threads() 1 as in a team of one, and a nested region
+ * behaves as it would inside that inactive team.  Inside a parallel region fn reads the enclosing team's
  * thread numbers, so there, and whenever more threads may run, libgomp's
  * own GOMP_parallel does the work. */
 #define _GNU_SOURCE

@@ -433,12 +433,12 @@ int bl_normal_factor(bl_normal *N, double delta)
      * thread, not in an OpenMP team (nested in one, each of CHOLMOD's
      * regions cost a futex call: 27,000 per iteration at 10,050 blocks) */
     omp_set_max_active_levels(0);
-    factor_job job = {&N->p[np - 1], delta};
+    factor_job second = {&N->p[1], delta};
     pthread_t other;
-    int started = np == 2 && pthread_create(&other, NULL, factor_thread, &job) == 0;
+    int started = np == 2 && pthread_create(&other, NULL, factor_thread, &second) == 0;
     part_factor(&N->p[0], delta);
     if (started) pthread_join(other, NULL);
-    else if (np == 2) part_factor(&N->p[1], delta);
+    else if (np == 2) part_factor(&N->p[1], delta); /* no thread to be had */
     omp_set_max_active_levels(1);
     for (int k = 0; k < np; k++)
         if (N->p[k].status < 0) return -1;
