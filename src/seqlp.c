@@ -316,9 +316,9 @@ static void name_blocks(run *r, bl_solution *s, int lp)
 }
 
 /* The cost per unit normal force (W0) with which the fixed LPs choose the
- * least normal force: 1e-10 made a 1,040-block wall between two abutments
- * certify (0.56059, verified); 1e-8 left mechanisms whose interpenetration
- * of that order failed the verification. */
+ * least normal force: with 1e-10 a 1,040-block wall between two abutments
+ * certifies (0.56082, verified); 1e-8 left mechanisms whose
+ * interpenetration of that order failed the verification. */
 #define LEAST_N 1e-10
 
 /* One start: LPs with fixed shear capacities from the normal forces r->n
