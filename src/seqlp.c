@@ -454,9 +454,10 @@ static double uniform(unsigned long long *state)
  * best so far instead, because on a stack-bond wall (3 columns of 12
  * blocks, mu = 5) states at the best alpha, 0.5714, never led elsewhere,
  * while states below it led to certified answers down to 0.2078 in 20
- * starts.  Returns the LP status. */
-static bl_lp_status random_state(run *r, double alpha, unsigned long long *rng,
-                                 const bl_seqlp_options *o, bl_error *err)
+ * starts.  The LP status in *status; -1 (err set) when the LP cannot be
+ * made. */
+static int random_state(run *r, double alpha, unsigned long long *rng,
+                        const bl_seqlp_options *o, bl_lp_status *status, bl_error *err)
 {
     const bl_system *c = r->cone;
     for (int j = 0; j < c->nforce; j++) {
@@ -467,16 +468,29 @@ static bl_lp_status random_state(run *r, double alpha, unsigned long long *rng,
     r->clo[c->nforce] = r->chi[c->nforce] = alpha;
     r->obj[c->nforce] = 0.0;
     bl_lp *lp = bl_solve_lp(c, r->clo, r->chi, r->obj, &o->base, err);
-    if (!lp) return BL_LP_FAILED;
+    if (!lp) return -1;
     bl_lp_status st = bl_lp_solve(lp);
     r->iterations += bl_lp_iterations(lp);
+    if (st == BL_LP_UNBOUNDED || st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) {
+        /* Blocks confined between supports can carry any compression,
+         * and c . x then has no maximum (doc/seqlp.md 13): the state
+         * maximizes c . x - sum n instead, every unit of normal force
+         * costing more than its c gives. */
+        for (int j = 0; j < c->nforce; j++) r->obj[j] -= c->col_nt[c->dim * j];
+        bl_lp_free(lp);
+        lp = bl_solve_lp(c, r->clo, r->chi, r->obj, &o->base, err);
+        if (!lp) return -1;
+        st = bl_lp_solve(lp);
+        r->iterations += bl_lp_iterations(lp);
+    }
     if (st == BL_LP_OPTIMAL) {
         const double *x = bl_lp_primal(lp);
         for (int q = 0; q < c->npoints; q++) r->n[q] = 0.0;
         for (int j = 0; j < c->nforce; j++) r->n[c->col_point[j]] += x[j] * c->col_nt[c->dim * j];
     }
     bl_lp_free(lp);
-    return st;
+    *status = st;
+    return 0;
 }
 
 /* The cone system of the model with every joint rigid against sliding. */
@@ -598,9 +612,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         if (k == 0) {
             for (int p = 0; p < np; p++) r.n[p] = s->force[mc->dim * p] / r.fixed->W0;
         } else {
-            bl_lp_status st = random_state(&r, uniform(&rng) * from, &rng, o, err);
+            bl_lp_status st;
+            if (random_state(&r, uniform(&rng) * from, &rng, o, &st, err)) goto fail;
             s->lps++;
-            if (st == BL_LP_FAILED) goto fail;
             if (st != BL_LP_OPTIMAL) {
                 stop = st == BL_LP_INFEASIBLE ? BL_LP_OPTIMAL : st;
                 continue;

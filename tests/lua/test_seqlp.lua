@@ -200,6 +200,12 @@ do
   T.ok(rn.certified and rn.verified and rn.alpha <= ra.alpha * (1 + 1e-9),
        "wall between abutments, interior point: certified, verified, not above the associative alpha",
        ("%s %s %.6f vs %.6f"):format(rn.status, tostring(rn.verified), rn.alpha, ra.alpha))
+  -- restarts draw stress states maximizing a random c.x, which the
+  -- confined compression leaves without a maximum: both must still run
+  local rs = solve { lp = "ipm", starts = 2, progress = false }
+  T.ok(#rs.history == 3 and rs.certified and rs.verified and rs.alpha <= rn.alpha * (1 + 1e-9),
+       "wall between abutments, 2 restarts: all three starts run, certified, verified, not above one start",
+       ("%d starts, %s %.6f vs %.6f"):format(#rs.history, rs.status, rs.alpha, rn.alpha))
 end
 
 T.done()
