@@ -270,6 +270,11 @@ void bl_system_fixed_bounds(const bl_system *s, const double *n, const double *C
     }
 }
 
+void bl_system_cost_normal(const bl_system *s, double eps, double *obj)
+{
+    for (int j = 0; j < s->nforce; j++) obj[j] -= eps * s->col_nt[s->dim * j];
+}
+
 void bl_system_speed(const bl_system *s, const double *w, const double *dt, const double *dt3,
                      double *speed)
 {

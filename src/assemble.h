@@ -150,6 +150,19 @@ void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, do
 /* Physical mechanism (vx, vy, omega per block) from the row multipliers y. */
 void bl_system_mechanism(const bl_system *s, const bl_model *m, const double *y, double *u);
 
+/* obj[j] -= eps n_j over the force columns, n_j the normal force of a unit
+ * of column j (in units of W0): with eps > 0 an LP that maximizes obj takes,
+ * among its optimal force fields, one with less total normal force.  Blocks
+ * confined between supports can carry any compression, and without such a
+ * cost their LPs' optimal force fields are unbounded (doc/seqlp.md 13). */
+void bl_system_cost_normal(const bl_system *s, double eps, double *obj);
+
+/* The cost per unit normal force with which an LP the interior point could
+ * not finish is solved again: with 1e-10 a 1,040-block wall between two
+ * abutments certifies (0.56082, verified); 1e-8 left mechanisms whose
+ * interpenetration of that order failed the verification. */
+#define BL_LEAST_N 1e-10
+
 /* r = A x + alpha fL + fD, over the force columns x and alpha. */
 void bl_system_residual(const bl_system *s, const double *x, double alpha, double *r);
 

@@ -73,6 +73,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     bl_lp *lp = NULL;
     bl_lp_status st = BL_LP_FAILED;
     double t2 = bl_clock(), t3 = t2, prev = NAN, solve_time = 0.0;
+    int lost = 0; /* iterations of LPs solved again */
     for (int round = 1;; round++) {
         sys = m->dim == 3 ? bl_system_build3(m, &cone, BL_FRICTION_CONE, err) : bl_system_build(m, BL_FRICTION_CONE, err);
         if (!sys) break;
@@ -83,6 +84,23 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         if (!lp) break;
         t2 = bl_clock();
         st = bl_lp_solve(lp);
+        if ((st == BL_LP_FAILED || st == BL_LP_ITERATION_LIMIT) &&
+            strcmp(bl_lp_engine(lp), "ipm") == 0) {
+            /* Blocks confined between supports can carry any compression,
+             * and the interior point does not converge on the unbounded
+             * optimal face (doc/seqlp.md 13).  Every force column capped
+             * far above any force equilibrium needs (10 W0 per row, some
+             * 30 times the model's weight) bounds it without a cost that
+             * would tilt the mechanism, which the verification checks. */
+            double cap = 10.0 * sys->nrows;
+            for (int j = 0; j < sys->nforce; j++)
+                if (isinf(sys->hi[j])) sys->hi[j] = cap;
+            lost += bl_lp_iterations(lp);
+            bl_lp_free(lp);
+            lp = bl_solve_lp(sys, sys->lo, sys->hi, NULL, o, err);
+            if (!lp) break;
+            st = bl_lp_solve(lp);
+        }
         t3 = bl_clock();
         solve_time += t3 - t2;
         s->cone_rounds = round;
@@ -117,7 +135,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
 
     s->status = bl_status_of_lp(st);
     s->lp = bl_lp_engine(lp);
-    s->iterations = bl_lp_iterations(lp);
+    s->iterations = bl_lp_iterations(lp) + lost;
     s->factor_nnz = bl_lp_factor_nnz(lp);
     s->rows = sys->nrows;
     s->cols = sys->ncols;

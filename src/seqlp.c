@@ -315,12 +315,6 @@ static void name_blocks(run *r, bl_solution *s, int lp)
         snprintf(s->note + len, sizeof s->note - len, " and %d more", named - 8);
 }
 
-/* The cost per unit normal force (W0) with which the fixed LPs choose the
- * least normal force: with 1e-10 a 1,040-block wall between two abutments
- * certifies (0.56082, verified); 1e-8 left mechanisms whose
- * interpenetration of that order failed the verification. */
-#define LEAST_N 1e-10
-
 /* One start: LPs with fixed shear capacities from the normal forces r->n
  * until alpha settles and a certificate is found (returns 1, and keeps the
  * answer in r->best when it is the lowest yet), the cap is reached or an LP
@@ -350,12 +344,10 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
              * interior point, heading for the centre of that face, does
              * not converge.  From here on the fixed LPs take, among their
              * optimal force fields, one with the least total normal force
-             * (a cost of LEAST_N per unit, in units of W0): a bounded
-             * face, and for friction the conservative choice (doc/seqlp.md
-             * 13). */
+             * (BL_LEAST_N): a bounded face, and for friction the
+             * conservative choice (doc/seqlp.md 13). */
             r->least_n = 1;
-            for (int k = 0; k < f->nforce; k++)
-                if (f->col_kind[k] == BL_COL_NORMAL) r->fixed->obj[k] = -LEAST_N;
+            bl_system_cost_normal(f, BL_LEAST_N, r->fixed->obj);
             s->lps++;
             s->iterations += bl_lp_iterations(r->lp_fixed);
             if (o->base.verbose)
@@ -476,7 +468,7 @@ static int random_state(run *r, double alpha, unsigned long long *rng,
          * and c . x then has no maximum (doc/seqlp.md 13): the state
          * maximizes c . x - sum n instead, every unit of normal force
          * costing more than its c gives. */
-        for (int j = 0; j < c->nforce; j++) r->obj[j] -= c->col_nt[c->dim * j];
+        bl_system_cost_normal(c, 1.0, r->obj);
         bl_lp_free(lp);
         lp = bl_solve_lp(c, r->clo, r->chi, r->obj, &o->base, err);
         if (!lp) return -1;

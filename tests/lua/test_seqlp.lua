@@ -208,4 +208,27 @@ do
        ("%d starts, %s %.6f vs %.6f"):format(#rs.history, rs.status, rs.alpha, rn.alpha))
 end
 
+-- Abutments beside the lower half of a 40-course wall: the associative LP
+-- itself ended in numerical trouble on the interior point (55 iterations,
+-- no answer).  Its answer must be optimal and verified: residuals of the
+-- static and kinematic conditions below 1e-7 bracket alpha on their own.
+do
+  local n = 40
+  model { mu = 0.65 }
+  local E, U = { .5 }, {}
+  for _ = 1, n - 1 do E[#E + 1] = 1 end
+  E[#E + 1] = .5
+  for _ = 1, n do U[#U + 1] = 1 end
+  local courses = {}
+  for c = 1, n do courses[c] = c % 2 == 1 and E or U end
+  wall { courses = courses, unit = { 0.4, 0.175 } }
+  local H, W = 0.175 * (n // 2), 0.4 * n
+  block { vertices = { { -1, 0 }, { 0, 0 }, { 0, H }, { -1, H } }, support = true }
+  block { vertices = { { W, 0 }, { W + 1, 0 }, { W + 1, H }, { W, H } }, support = true }
+  local ra = solve { lp = "ipm", flow = "associative" }
+  T.ok(ra.status == "optimal" and ra.verified,
+       "wall between half-height abutments, interior point: the associative answer optimal and verified",
+       ("%s %s %s"):format(ra.status, tostring(ra.verified), tostring(ra.alpha)))
+end
+
 T.done()
