@@ -17,13 +17,7 @@ local three = engine == "3d" or engine == "3dseq"
 model { mu = 0.65, dim = three and 3 or 2 }
 local depth = three and 0.2 or nil
 if n then
-  local E, U = { .5 }, {}
-  for _ = 1, n - 1 do E[#E + 1] = 1 end
-  E[#E + 1] = .5
-  for _ = 1, n do U[#U + 1] = 1 end
-  local courses = {}
-  for c = 1, n do courses[c] = c % 2 == 1 and E or U end
-  wall { courses = courses, unit = { 0.4, 0.175 }, depth = depth }
+  wall { courses = require("walls").running_bond(n), unit = { 0.4, 0.175 }, depth = depth }
 else
   wall { courses = require("walls")[arg[2]], unit = { 0.4, 0.175 }, depth = depth }
 end

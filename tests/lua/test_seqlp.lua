@@ -182,19 +182,18 @@ end
 -- optimal force fields are unbounded.  On the interior point the third LP
 -- of this wall did not converge (iteration limit, no answer); the sequence
 -- must end with a certified, verified answer, not above the associative one.
-do
-  local n = 32
+-- The running-bond wall of n courses with abutments (supports 1 wide)
+-- beside its lower k courses.
+local function between_abutments(n, k)
   model { mu = 0.65 }
-  local E, U = { .5 }, {}
-  for _ = 1, n - 1 do E[#E + 1] = 1 end
-  E[#E + 1] = .5
-  for _ = 1, n do U[#U + 1] = 1 end
-  local courses = {}
-  for c = 1, n do courses[c] = c % 2 == 1 and E or U end
-  wall { courses = courses, unit = { 0.4, 0.175 } }
-  local H, W = 0.175 * math.floor(2 * n / 3), 0.4 * n
+  wall { courses = walls.running_bond(n), unit = { 0.4, 0.175 } }
+  local H, W = 0.175 * k, 0.4 * n
   block { vertices = { { -1, 0 }, { 0, 0 }, { 0, H }, { -1, H } }, support = true }
   block { vertices = { { W, 0 }, { W + 1, 0 }, { W + 1, H }, { W, H } }, support = true }
+end
+
+do
+  between_abutments(32, 21)
   local ra = solve { lp = "ipm", flow = "associative" }
   local rn = solve { lp = "ipm", progress = false }
   T.ok(rn.certified and rn.verified and rn.alpha <= ra.alpha * (1 + 1e-9),
@@ -213,18 +212,7 @@ end
 -- no answer).  Its answer must be optimal and verified: residuals of the
 -- static and kinematic conditions below 1e-7 bracket alpha on their own.
 do
-  local n = 40
-  model { mu = 0.65 }
-  local E, U = { .5 }, {}
-  for _ = 1, n - 1 do E[#E + 1] = 1 end
-  E[#E + 1] = .5
-  for _ = 1, n do U[#U + 1] = 1 end
-  local courses = {}
-  for c = 1, n do courses[c] = c % 2 == 1 and E or U end
-  wall { courses = courses, unit = { 0.4, 0.175 } }
-  local H, W = 0.175 * (n // 2), 0.4 * n
-  block { vertices = { { -1, 0 }, { 0, 0 }, { 0, H }, { -1, H } }, support = true }
-  block { vertices = { { W, 0 }, { W + 1, 0 }, { W + 1, H }, { W, H } }, support = true }
+  between_abutments(40, 20)
   local ra = solve { lp = "ipm", flow = "associative" }
   T.ok(ra.status == "optimal" and ra.verified,
        "wall between half-height abutments, interior point: the associative answer optimal and verified",

@@ -34,4 +34,16 @@ function walls.random(seed)
   return courses
 end
 
+-- The running-bond wall of the benchmark: n full blocks per course and n
+-- courses, the half-block course first.
+function walls.running_bond(n)
+  local E, U = { .5 }, {}
+  for _ = 1, n - 1 do E[#E + 1] = 1 end
+  E[#E + 1] = .5
+  for _ = 1, n do U[#U + 1] = 1 end
+  local courses = {}
+  for c = 1, n do courses[c] = c % 2 == 1 and E or U end
+  return courses
+end
+
 return walls
