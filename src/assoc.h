@@ -20,6 +20,9 @@ typedef struct bl_solve_options {
     bl_lp_engine_kind lp;
     const char *mps;    /* write the LP to this MPS file first, or NULL */
     bl_cone cone;       /* 3D: the friction pyramid (8 facets, inscribed) */
+    int early_infeasible; /* the LP's "infeasible" only means "go on": the
+                             interior point may stop at an early dual ray
+                             (lp.h); not a user option */
 } bl_solve_options;
 
 void bl_solve_options_default(bl_solve_options *o);

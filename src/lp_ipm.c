@@ -75,6 +75,7 @@ typedef struct ipm {
     double *kx, *kzl, *kzu, *ky, ka, kmu;
     int kept;           /* the point above is set */
     bl_lp_status last;  /* the status of the last solve */
+    double *yprev, *at; /* early_infeasible: the last y, A^T (y - yprev) */
 } ipm;
 
 static void *xcalloc(size_t n, size_t size) { return calloc(n ? n : 1, size); }
@@ -94,6 +95,8 @@ static void destroy(void *e)
     for (size_t i = 0; i < sizeof d / sizeof *d; i++) free(*d[i]);
     free(p->map);
     free(p->kind);
+    free(p->yprev);
+    free(p->at);
     free(p);
 }
 
@@ -117,6 +120,8 @@ static int build(ipm *p, bl_error *err)
     free(p->kind);
     free(p->U);
     free(p->c);
+    free(p->at); /* ray_test's, n entries */
+    p->at = NULL;
     p->map = xcalloc((size_t)n, sizeof *p->map);
     p->sign = xcalloc((size_t)n, sizeof *p->sign);
     p->kind = xcalloc((size_t)n, sizeof *p->kind);
@@ -568,6 +573,51 @@ static void answers(ipm *p)
     for (int i = 0; i < p->m; i++) p->yu[i] = -p->y[i];
 }
 
+/* The early test for a dual ray (settings.early_infeasible).  Along an
+ * infeasible problem's path y grows as y0 + t r, r a Farkas ray, long
+ * before it passes the divergence test; the step r = y - yprev cancels
+ * y0 (and with it g . y, which must vanish for the free alpha).  For a
+ * feasible x, with e the largest positive (A^T r)_j over the columns
+ * without an upper bound,
+ *     b.r - sum over boxed columns of max(0, (A^T r)_j) U_j
+ *         <= e sum_j x_j + alpha g.r,
+ * so a positive left side L proves every feasible point to have
+ * sum x >= L / (2e) or |alpha| >= L / (2 |g.r|).  The test passes when
+ * L is more than round-off (RAY_MARGIN of |r| |b|: the dual of a feasible
+ * set without interior also grows, along an r with b.r = 0) and both
+ * bounds exceed RAY_FAR times the iterate's own, on RAY_RUN iterations in
+ * a row: an equilibrium would need ten times the forces (or the load
+ * multiplier) of the path.  Returns 1 when it passes, with r in
+ * p->yprev (doc/theory.md 3.2, "Early dual ray"). */
+#define RAY_FAR 10.0
+#define RAY_RUN 2
+#define RAY_MARGIN 1e-6
+static int ray_test(ipm *p, int it, int *run)
+{
+    int m = p->m, n = p->n;
+    if (!p->yprev) p->yprev = xcalloc((size_t)m, sizeof *p->yprev);
+    if (!p->at) p->at = xcalloc((size_t)n, sizeof *p->at);
+    if (!p->yprev || !p->at) return 0;
+    double *r = p->yprev;
+    for (int i = 0; i < m; i++) r[i] = p->y[i] - r[i];
+    mul_At(p, r, p->at);
+    double L = 0.0, e = 0.0, sx = 0.0;
+    for (int i = 0; i < m; i++) L += p->b[i] * r[i];
+    for (int j = 0; j < n; j++) {
+        if (p->kind[j] == COL_BOXED) L -= fmax(p->at[j], 0.0) * p->U[j];
+        else e = fmax(e, p->at[j]);
+        sx += p->x[j];
+    }
+    double gr = p->border >= 0 ? fabs(dot(p->g, r, m)) : 0.0;
+    double rn = inf_norm(r, m), bn = 1.0 + inf_norm(p->b, m);
+    int pass = it >= 1 && L > RAY_MARGIN * rn * bn && L >= 2.0 * e * RAY_FAR * fmax(sx, 1.0) &&
+               L >= 2.0 * gr * RAY_FAR * fmax(fabs(p->a), 1.0);
+    *run = pass ? *run + 1 : 0;
+    if (*run >= RAY_RUN) return 1;
+    memcpy(r, p->y, (size_t)m * sizeof *r); /* yprev for the next iteration */
+    return 0;
+}
+
 static bl_lp_status solve(void *e)
 {
     ipm *p = e;
@@ -586,6 +636,7 @@ static bl_lp_status solve(void *e)
     int keep = 1; /* no iterate of this solve kept yet */
     double stall_gap = INFINITY, stall_mu = INFINITY; /* the last real fall of the gap */
     int stall_it = 0;
+    int ray_run = 0; /* iterations in a row that passed ray_test */
     if (p->warm && p->kept) warm_point(p);
     else if (starting_point(p)) status = BL_LP_FAILED;
     for (int it = 0; status == BL_LP_ITERATION_LIMIT && it < p->set.max_iterations; it++) {
@@ -625,6 +676,11 @@ static bl_lp_status solve(void *e)
                     it, p->a, ep, ed, eg, mu);
         if (ep <= tol && eu <= tol && ed <= tol && eg <= tol) {
             status = BL_LP_OPTIMAL;
+            break;
+        }
+        if (p->set.early_infeasible && ep > tol && ray_test(p, it, &ray_run)) {
+            memcpy(p->y, p->yprev, (size_t)m * sizeof *p->y); /* the ray, for ray() */
+            status = BL_LP_INFEASIBLE;
             break;
         }
         if (keep && it >= 1 && fmax(fmax(ep, eu), fmax(ed, eg)) <= KEEP_AT) {

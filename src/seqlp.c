@@ -100,9 +100,14 @@ static double point_motion(run *r, const double *y)
 /* Solves the certificate LP with the bounds in clo, chi (creating it the
  * first time): the interior point, or, with alpha fixed, the simplex where
  * the interior point does not converge.  Counts it in s. */
-static bl_lp_status certificate_lp(run *r, const bl_solve_options *o, bl_solution *s,
+static bl_lp_status certificate_lp(run *r, const bl_solve_options *asked, bl_solution *s,
                                    bl_error *err)
 {
+    /* a certificate that fails only sends the sequence on: the interior
+     * point may end at an early dual ray (lp.h) */
+    bl_solve_options own = *asked;
+    own.early_infeasible = 1;
+    const bl_solve_options *o = &own;
     int fixed = r->clo[r->cone->nforce] == r->chi[r->cone->nforce];
     const bl_system *c = r->cone;
     /* the objective: the lowest alpha */

@@ -1,8 +1,13 @@
-/* Warm starts: after a small change of the bounds, re-solving from the last
+/* Re-solves of the W4 wall's LP (DESIGN.md 5, assembled through the model).
+ * Warm starts: after a small change of the bounds, re-solving from the last
  * solve (its basis; for the interior point, an iterate kept from its path)
  * takes fewer iterations than solving the changed LP from scratch,
  * with either engine, and reaches the same optimum (counted, not timed).
- * The LP is the W4 wall of DESIGN.md 5 (assembled through the model). */
+ * The interior point's early dual ray (settings.early_infeasible): with the
+ * load multiplier held above W4's associative 0.331948, where no
+ * equilibrium exists, it ends sooner, and its ray, checked on the matrix,
+ * proves that an equilibrium would need more than ten times the forces of
+ * one at 0.3; at 0.3 itself it solves as without it. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -101,11 +106,83 @@ static void interior_point(void **state)
     warm_vs_cold(BL_LP_IPM);
 }
 
+/* The W4 LP with alpha held at a, on the interior point, with or without
+ * the early ray: its status, and the forces' sum when optimal. */
+static bl_lp *held(const bl_system *s, double a, int early, bl_lp_status *st)
+{
+    double *lo = malloc((size_t)s->ncols * sizeof *lo), *hi = malloc((size_t)s->ncols * sizeof *hi);
+    memcpy(lo, s->lo, (size_t)s->ncols * sizeof *lo);
+    memcpy(hi, s->hi, (size_t)s->ncols * sizeof *hi);
+    lo[s->nforce] = hi[s->nforce] = a;
+    double *zero = calloc((size_t)s->ncols, sizeof *zero);
+    bl_lp_problem p = {s->nrows, s->ncols, s->colptr, s->rowind, s->val, lo, hi, s->rhs, zero};
+    bl_lp_settings set;
+    bl_lp_settings_default(&set);
+    set.engine = BL_LP_IPM;
+    set.early_infeasible = early;
+    bl_lp *lp = bl_lp_create(&p, &set, NULL);
+    assert_non_null(lp);
+    *st = bl_lp_solve(lp);
+    free(lo);
+    free(hi);
+    free(zero);
+    return lp;
+}
+
+static void early_ray(void **state)
+{
+    (void)state;
+    bl_system *s = w4();
+    bl_lp_status st;
+    /* an equilibrium at 0.3, below the associative alpha */
+    bl_lp *ok = held(s, 0.3, 1, &st);
+    assert_int_equal(st, BL_LP_OPTIMAL);
+    double sum = 0.0;
+    for (int j = 0; j < s->nforce; j++) sum += bl_lp_primal(ok)[j];
+    bl_lp *plain = held(s, 0.3, 0, &st);
+    assert_int_equal(st, BL_LP_OPTIMAL);
+    assert_int_equal(bl_lp_iterations(ok), bl_lp_iterations(plain));
+
+    /* none at 0.4 */
+    bl_lp *late = held(s, 0.4, 0, &st);
+    assert_int_equal(st, BL_LP_INFEASIBLE);
+    bl_lp *early = held(s, 0.4, 1, &st);
+    assert_int_equal(st, BL_LP_INFEASIBLE);
+    print_message("# infeasible at 0.4: %d iterations, %d with the early ray\n",
+                  bl_lp_iterations(late), bl_lp_iterations(early));
+    assert_true(bl_lp_iterations(early) < bl_lp_iterations(late));
+
+    /* the ray r on the matrix: for x >= 0 with A x = rhs - 0.4 fL,
+     * r.(rhs - 0.4 fL) = (A^T r).x <= e sum x, e the largest (A^T r)_j */
+    const double *r = bl_lp_ray(early);
+    assert_non_null(r);
+    double L = 0.0, e = 0.0;
+    for (int i = 0; i < s->nrows; i++) L += s->rhs[i] * r[i];
+    for (int q = s->colptr[s->nforce]; q < s->colptr[s->nforce + 1]; q++)
+        L -= 0.4 * s->val[q] * r[s->rowind[q]];
+    double sg = L < 0.0 ? -1.0 : 1.0; /* the ray's sign is the engine's */
+    for (int j = 0; j < s->nforce; j++) {
+        assert_true(s->lo[j] == 0.0 && isinf(s->hi[j])); /* the cone's columns */
+        double w = 0.0;
+        for (int q = s->colptr[j]; q < s->colptr[j + 1]; q++) w += s->val[q] * r[s->rowind[q]];
+        e = fmax(e, sg * w);
+    }
+    print_message("# ray: any equilibrium at 0.4 needs sum x >= %.3g (%.3g at 0.3)\n",
+                  sg * L / e, sum);
+    assert_true(sg * L > 0.0 && sg * L >= 10.0 * e * sum);
+    bl_lp_free(ok);
+    bl_lp_free(plain);
+    bl_lp_free(late);
+    bl_lp_free(early);
+    bl_system_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(simplex),
         cmocka_unit_test(interior_point),
+        cmocka_unit_test(early_ray),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
