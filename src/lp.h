@@ -43,10 +43,10 @@ typedef struct bl_lp_settings {
     double tolerance;    /* simplex: primal and dual feasibility;
                             ipm: relative residuals and gap */
     int threads;         /* ipm: threads, 0: OMP_NUM_THREADS or every core */
-    int early_infeasible; /* ipm: end at the first step of y that proves any
-                             equilibrium ten times the path's forces
-                             (lp_ipm.c, ray_test): for LPs whose
-                             "infeasible" only means "go on" */
+    int early_infeasible; /* ipm: infeasible at the first step of y that
+                             proves any equilibrium would need ten times
+                             the path's forces (lp_ipm.c, ray_test): for
+                             LPs whose "infeasible" only means "go on" */
 } bl_lp_settings;
 
 void bl_lp_settings_default(bl_lp_settings *s);
