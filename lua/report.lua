@@ -37,6 +37,9 @@ function Result.__tostring(r)
       say("  non-associative solution; starts = K looks for lower ones)")
     elseif r.certified and #r.history == 1 then
       say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")
+    elseif #r.history > 1 then
+      say("  (%d starts, each another path to a solution%s)", #r.history,
+          r.certified and "; alpha is the lowest certified" or "")
     end
   end
   if r.ipopt then

@@ -598,13 +598,17 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     unsigned long long rng = o->seed;
     bl_lp_status stop = BL_LP_OPTIMAL;
     /* Without sliding joints the first LP settles and certifies at once.
-     * By default (starts < 0) no restarts, except when unlimited friction
-     * gives the associative alpha: start 0 then certifies the associative
+     * By default (starts < 0) 10 restarts when unlimited friction gives
+     * the associative alpha: start 0 then certifies the associative
      * answer, and restarts found lower ones in every case measured
      * (doc/seqlp.md: W1, the stack-bond wall), at 0.05-0.2 s for 10 on
-     * small walls. */
-    int starts = !sliding ? 0 : o->starts >= 0 ? o->starts : s->assoc_is_solution ? 10 : 0;
-    for (int k = 0; k <= starts && stop == BL_LP_OPTIMAL; k++) {
+     * small walls; else restarts only while none has certified
+     * (BL_SEQLP_RETRIES). */
+    int retry = sliding && o->starts < 0 && !s->assoc_is_solution &&
+                r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
+    int starts = !sliding ? 0 : o->starts >= 0 ? o->starts : s->assoc_is_solution ? 10
+                                                            : retry ? BL_SEQLP_RETRIES : 0;
+    for (int k = 0; k <= starts && stop == BL_LP_OPTIMAL && !(retry && r.found); k++) {
         double from = r.found ? r.best_alpha : s->alpha_assoc;
         if (k == 0) {
             for (int p = 0; p < np; p++) r.n[p] = s->force[mc->dim * p] / r.fixed->W0;

@@ -19,7 +19,9 @@ typedef struct bl_seqlp_options {
     int max_lps;           /* cap on the LPs of one start (100) */
     int starts;            /* further starts from random stress states (Eq. 22);
                               < 0: 10 when unlimited friction gives the
-                              associative alpha, else none */
+                              associative alpha, else up to BL_SEQLP_RETRIES
+                              until one certifies, on models of at most
+                              BL_SEQLP_RETRY_ROWS rows */
     unsigned long long seed; /* of those random states */
     int progress;          /* show start, LP and alpha on stderr after 0.5 s */
     int when_sliding;      /* solve's default: without a joint of finite, non-zero
@@ -27,6 +29,16 @@ typedef struct bl_seqlp_options {
 } bl_seqlp_options;
 
 void bl_seqlp_options_default(bl_seqlp_options *o);
+
+/* By default a first start that ends without a certificate is followed by
+ * further starts until one certifies, up to BL_SEQLP_RETRIES: whether a
+ * start certifies within its LPs is close to chance on domes (one start
+ * certified 4 of 6 and, with other round-off, 3 of 6; with the retries 6
+ * and 5, doc/seqlp.md 14).  Only up to BL_SEQLP_RETRY_ROWS rows, where a
+ * start takes seconds (a start of the 10,050-block wall takes minutes, and
+ * none has certified it). */
+#define BL_SEQLP_RETRIES 3
+#define BL_SEQLP_RETRY_ROWS 10000
 
 /* The pyramid the 3D sequence of LPs (and the direct solve) runs on: the
  * one asked for when it has an even number of facets (its section at n is
