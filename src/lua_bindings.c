@@ -856,18 +856,32 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         set_boolean(L, "interrupted", s->interrupted);
         set_integer(L, "lps", s->lps);
         set_number(L, "slip", s->slip);
-        /* history[k] = the alphas of start k, from the alpha it began at */
+        /* history[k] = the alphas of start k, from the alpha it began at;
+         * starts[k] = what start k cost and what it certified */
         lua_createtable(L, s->nstarts, 0);
         for (int k = 0; k < s->nstarts; k++) {
-            int end = k + 1 < s->nstarts ? s->start[k + 1] : s->nhistory;
-            lua_createtable(L, end - s->start[k], 0);
-            for (int i = s->start[k]; i < end; i++) {
+            int first = s->start[k].first;
+            int end = k + 1 < s->nstarts ? s->start[k + 1].first : s->nhistory;
+            lua_createtable(L, end - first, 0);
+            for (int i = first; i < end; i++) {
                 lua_pushnumber(L, s->history[i]);
-                lua_rawseti(L, -2, i - s->start[k] + 1);
+                lua_rawseti(L, -2, i - first + 1);
             }
             lua_rawseti(L, -2, k + 1);
         }
         lua_setfield(L, -2, "history");
+        lua_createtable(L, s->nstarts, 0);
+        for (int k = 0; k < s->nstarts; k++) {
+            const bl_start *st = &s->start[k];
+            lua_createtable(L, 0, 5);
+            set_integer(L, "lps", st->lps);
+            set_integer(L, "iterations", st->iterations);
+            set_number(L, "time", st->seconds);
+            set_boolean(L, "certified", st->alpha == st->alpha);
+            if (st->alpha == st->alpha) set_number(L, "alpha", st->alpha);
+            lua_rawseti(L, -2, k + 1);
+        }
+        lua_setfield(L, -2, "starts");
         if (s->note[0]) {
             lua_pushstring(L, s->note);
             lua_setfield(L, -2, "note");

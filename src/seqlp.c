@@ -285,10 +285,10 @@ static int append(bl_solution *s, double a)
  * starts from. */
 static int start_history(bl_solution *s, double from)
 {
-    int *st = realloc(s->start, (size_t)(s->nstarts + 1) * sizeof *st);
+    bl_start *st = realloc(s->start, (size_t)(s->nstarts + 1) * sizeof *st);
     if (!st) return -1;
     s->start = st;
-    st[s->nstarts++] = s->nhistory;
+    st[s->nstarts++] = (bl_start){.first = s->nhistory, .alpha = NAN};
     return append(s, from);
 }
 
@@ -386,6 +386,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
             bl_lp_status cs = certify(r, a, y, o, s, &ac, err);
             if (cs == BL_LP_FAILED && !r->lp_cone) return -1;
             if (cs == BL_LP_OPTIMAL) {
+                s->start[s->nstarts - 1].alpha = ac;
                 if (!r->found || ac < r->best_alpha) {
                     r->found = 1;
                     r->best_alpha = ac;
@@ -610,6 +611,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                                                             : retry ? BL_SEQLP_RETRIES : 0;
     for (int k = 0; k <= starts && stop == BL_LP_OPTIMAL && !(retry && r.found); k++) {
         double from = r.found ? r.best_alpha : s->alpha_assoc;
+        int lps0 = s->lps, its0 = s->iterations + r.iterations;
+        double tk = bl_clock();
         if (k == 0) {
             for (int p = 0; p < np; p++) r.n[p] = s->force[mc->dim * p] / r.fixed->W0;
         } else {
@@ -626,7 +629,12 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             bl_error_set(err, "solve: out of memory");
             goto fail;
         }
-        if (one_start(&r, o, s, from, &stop, err) < 0) goto fail;
+        int done = one_start(&r, o, s, from, &stop, err);
+        bl_start *st = &s->start[s->nstarts - 1];
+        st->lps = s->lps - lps0;
+        st->iterations = s->iterations + r.iterations - its0;
+        st->seconds = bl_clock() - tk;
+        if (done < 0) goto fail;
     }
 
     if (stop == BL_LP_INTERRUPTED) {

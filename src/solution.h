@@ -57,6 +57,16 @@ typedef struct bl_timings {
     double detection, assembly, solve, verification, total;
 } bl_timings;
 
+/* One start of the sequence of LPs: where its alphas begin in the
+ * solution's history, what it cost (its random stress state's LP, its fixed
+ * LPs and certificates), and its certified alpha (NAN: none). */
+typedef struct bl_start {
+    int first;
+    int lps, iterations;
+    double seconds;
+    double alpha;
+} bl_start;
+
 typedef struct bl_solution {
     bl_model *model;         /* owned copy, interfaces detected */
     bl_status status;
@@ -99,7 +109,7 @@ typedef struct bl_solution {
     int nhistory;
     double *history;         /* alpha of each LP of the sequence, owned */
     int nstarts;
-    int *start;              /* where each start's history begins, owned */
+    bl_start *start;         /* each start of the sequence, owned */
     char note[256];          /* why a start ended without an answer, or "" */
     /* the direct solve (method "mpec") */
     double alpha_start;      /* alpha of the point it started from (NAN: cold) */

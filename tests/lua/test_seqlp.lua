@@ -24,6 +24,32 @@ T.ok(not r.assoc_is_solution and r.alpha_rigid > r.alpha_assoc,
      "W4: friction limits the associative answer (unlimited friction gives more)")
 T.ok(#r.history == 1 and r.history[1][1] == r.alpha_assoc,
      "W4: one start, its history beginning at the associative alpha")
+T.ok(#r.starts == 1 and r.starts[1].certified and r.starts[1].alpha == r.alpha
+     and r.starts[1].lps == r.lps - 2 and r.starts[1].lps > #r.history[1] - 1,
+     "W4: the start's record: certified, its alpha the answer, all LPs but the associative "
+     .. "and unlimited-friction ones, its fixed LPs and at least one certificate",
+     ("%d LPs of %d, %d fixed"):format(r.starts[1].lps, r.lps, #r.history[1] - 1))
+
+-- The cap: W4 needs about 20 fixed LPs; with 3 a start ends uncertified and
+-- says so.  By default further starts follow (each with its random stress
+-- state's LP and 3 fixed LPs); the starts' LPs and iterations add up to the
+-- whole but the associative and unlimited-friction LPs.
+local assoc_its = solve { flow = "associative" }.iterations
+r = solve { flow = "nonassociative", lps = 3, starts = 0 }
+T.ok(r.status == "not certified" and r.alpha ~= r.alpha and #r.history == 1 and #r.history[1] == 4
+     and not r.starts[1].certified and r.starts[1].lps == 3,
+     "W4, lps = 3, one start: not certified at the cap, no alpha, 3 fixed LPs kept",
+     ("%s, %d LPs"):format(r.status, #r.history[1] - 1))
+r = solve { flow = "nonassociative", lps = 3 }
+local lps, its, ok = 0, 0, #r.starts == 4
+for k, st in ipairs(r.starts) do
+  lps, its = lps + st.lps, its + st.iterations
+  ok = ok and not st.certified and st.lps == (k == 1 and 3 or 4) and #r.history[k] == 4
+end
+T.ok(ok and r.status == "not certified" and lps == r.lps - 2 and its > 0
+     and r.iterations - its > assoc_its,
+     "W4, lps = 3, default: 3 more starts while none certifies, the starts' LPs adding up",
+     ("%d starts, %d of %d LPs"):format(#r.starts, lps, r.lps))
 
 -- The default: the non-associative answer wherever a joint has finite
 -- friction, the associative one beside it; rigid joints need no sequence.
@@ -99,6 +125,9 @@ r = stack(20, 3)
 T.ok(r.alpha <= 0.1905 and r.certified and r.verified, "stack bond, 20 starts: alpha <= 0.1905, certified",
      ("got %.6f"):format(r.alpha))
 T.eq(#r.history, 21, "stack bond: the history of every start is kept")
+local lowest = math.huge
+for _, st in ipairs(r.starts) do if st.certified then lowest = math.min(lowest, st.alpha) end end
+T.eq(lowest, r.alpha, "stack bond: the answer is the lowest certified alpha of the 21 starts")
 T.eq(stack(20, 3).alpha, r.alpha, "stack bond: the same seed gives the same answer")
 
 -- Hard cases.  W4 at mu = 0.01 slides at alpha = mu; at mu = 100 it rocks
