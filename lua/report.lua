@@ -37,9 +37,11 @@ function Result.__tostring(r)
       say("  non-associative solution; starts = K looks for lower ones)")
     elseif r.certified and #r.history == 1 then
       say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")
-    elseif #r.history > 1 then
-      say("  (%d starts, each another path to a solution%s)", #r.history,
-          r.certified and "; alpha is the lowest certified" or "")
+    elseif #r.starts > 1 then
+      local certified = 0
+      for _, st in ipairs(r.starts) do certified = certified + (st.certified and 1 or 0) end
+      say("  (%d starts, each another path to a solution, %d certified%s)", #r.starts, certified,
+          r.certified and "; alpha is the lowest" or "")
     end
   end
   if r.ipopt then
