@@ -620,7 +620,15 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             if (random_state(&r, uniform(&rng) * from, &rng, o, &st, err)) goto fail;
             s->lps++;
             if (st != BL_LP_OPTIMAL) {
-                stop = st == BL_LP_INFEASIBLE ? BL_LP_OPTIMAL : st;
+                /* Ctrl-C and the time limit end the run; a state that
+                 * cannot be drawn (no equilibrium at that alpha, or an LP
+                 * the interior point does not finish: the 10,050-block
+                 * wall's, doc/seqlp.md 14) only skips this restart */
+                if (st == BL_LP_INTERRUPTED || st == BL_LP_TIME_LIMIT) stop = st;
+                else if (st != BL_LP_INFEASIBLE && !r.found)
+                    snprintf(s->note, sizeof s->note,
+                             "restart %d: the LP of its random stress state ended with %s", k,
+                             bl_status_name(bl_status_of_lp(st)));
                 continue;
             }
         }
