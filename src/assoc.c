@@ -20,6 +20,7 @@ void bl_solve_options_default(bl_solve_options *o)
     o->mps = NULL;
     o->cone = (bl_cone){.facets = 8};
     o->early_infeasible = 0;
+    o->lp_tolerance = 0;
 }
 
 bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const double *obj,
@@ -33,6 +34,7 @@ bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const
     ls.max_iterations = o->iterations;
     ls.threads = o->threads;
     ls.early_infeasible = o->early_infeasible;
+    ls.tolerance = o->lp_tolerance;
     bl_lp_problem p = {s->nrows, s->ncols, s->colptr, s->rowind, s->val,
                        lo,       hi,       s->rhs,    obj ? obj : s->obj};
     return bl_lp_create(&p, &ls, err);

@@ -23,6 +23,8 @@ typedef struct bl_solve_options {
     int early_infeasible; /* the LP's "infeasible" only means "go on": the
                              interior point may stop at an early dual ray
                              (lp.h); not a user option */
+    double lp_tolerance;  /* the LP engine's stopping tolerance, 0: its
+                             default (lp.h); not a user option */
 } bl_solve_options;
 
 void bl_solve_options_default(bl_solve_options *o);

@@ -636,6 +636,8 @@ static bl_lp_status solve(void *e)
     int keep = 1; /* no iterate of this solve kept yet */
     double stall_gap = INFINITY, stall_mu = INFINITY; /* the last real fall of the gap */
     int stall_it = 0;
+    double stall_ep = INFINITY; /* the last real fall of the primal residual */
+    int stall_ep_it = 0;
     int ray_run = 0; /* iterations in a row that passed ray_test */
     if (p->warm && p->kept) warm_point(p);
     else if (starting_point(p)) status = BL_LP_FAILED;
@@ -700,6 +702,19 @@ static bl_lp_status solve(void *e)
             stall_mu = mu;
             stall_it = it;
         } else if (it - stall_it >= 10 && mu < 0.01 * stall_mu) {
+            status = BL_LP_FAILED;
+            break;
+        }
+        /* A stalled primal residual, the other way round: gap and dual
+         * residual within the tolerance, the primal residual above it and
+         * not halving for 15 iterations.  Round-off in the steps does
+         * that: a random-objective LP of the 10,050-block wall (the
+         * sequence's restart, doc/seqlp.md 14) reached 1e-13 at iteration
+         * 19, then stayed between 1e-7 and 1e-1 until the limit of 200. */
+        if (!(eg <= tol && ed <= tol && eu <= tol) || ep < 0.5 * stall_ep) {
+            stall_ep = eg <= tol && ed <= tol && eu <= tol ? ep : INFINITY;
+            stall_ep_it = it;
+        } else if (it - stall_ep_it >= 15) {
             status = BL_LP_FAILED;
             break;
         }
