@@ -24,7 +24,8 @@ typedef struct bl_solve_options {
                              interior point may stop at an early dual ray
                              (lp.h); not a user option */
     double lp_tolerance;  /* the LP engine's stopping tolerance, 0: its
-                             default (lp.h); not a user option */
+                             default (lp.h: 1e-8 for the interior point,
+                             1e-9 for the simplex) */
 } bl_solve_options;
 
 void bl_solve_options_default(bl_solve_options *o);

@@ -1028,7 +1028,8 @@ static int model_solve(lua_State *L)
     static const char *const fields[] = {
         "flow",     "method", "lp",    "tolerance", "time_limit",      "iterations", "verbose",
         "mps",      "beta",   "settle", "slip",     "lps",             "starts",     "seed",
-        "progress", "start",  "penalty", "complementarity", "cone",       "threads", NULL};
+        "progress", "start",  "penalty", "complementarity", "cone",       "threads",
+        "lp_tolerance", NULL};
     static const char *const flows[] = {"associative", "nonassociative", NULL};
     static const char *const methods[] = {"assoc", "seqlp", "mpec", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
@@ -1092,6 +1093,9 @@ static int model_solve(lua_State *L)
             fail(L, "solve: field 'mps' must be a file name, got %s", luaL_typename(L, -1));
         o.mps = lua_tostring(L, -1); /* stays on the stack during the solve */
     }
+    o.lp_tolerance = number_field(L, 2, "solve", "lp_tolerance", 0, POSITIVE);
+    if (o.lp_tolerance > 1e-2)
+        fail(L, "solve: field 'lp_tolerance' must be at most 0.01, got %g", o.lp_tolerance);
     o.time_limit = number_field(L, 2, "solve", "time_limit", 0, POSITIVE);
     double iters = number_field(L, 2, "solve", "iterations", 0, POSITIVE);
     if (iters != floor(iters) || iters > 1e9)

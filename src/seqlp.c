@@ -487,7 +487,7 @@ static int random_state(run *r, double alpha, unsigned long long *rng,
      * wall's state met 1e-8 but for a primal residual that round-off kept
      * near 1e-6 for 180 iterations, doc/seqlp.md 14). */
     bl_solve_options loose = o->base;
-    loose.lp_tolerance = 1e-6;
+    loose.lp_tolerance = fmax(loose.lp_tolerance, 1e-6);
     if (st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) {
         so = &loose;
         if (state_lp(r, so, &lp, &st, err)) return -1;

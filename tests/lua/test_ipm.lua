@@ -63,6 +63,26 @@ r = solve {}
 T.eq(r.lp, "ipm", ("auto on %d rows: interior point"):format(r.size.rows))
 T.ok(r.size.factor_nnz > r.size.rows, "the interior point reports its factor's non-zeros")
 
+-- The stopping tolerance (solve{ lp_tolerance }, default 1e-8): a looser
+-- stop takes fewer iterations, and its answer is near the default's but
+-- its residuals fail the verification at 1e-7; a tighter one takes more
+-- and agrees with the default to the default's accuracy.
+model { mu = 0.65 }
+wall { courses = walls.running_bond(20), unit = { 0.4, 0.175 } }
+local def = solve { flow = "associative", lp = "ipm" }
+local loose = solve { flow = "associative", lp = "ipm", lp_tolerance = 1e-4 }
+local tight = solve { flow = "associative", lp = "ipm", lp_tolerance = 1e-12 }
+T.ok(loose.iterations < def.iterations and math.abs(loose.alpha - def.alpha) <= 1e-3 * def.alpha
+     and not loose.verified,
+     "lp_tolerance = 1e-4: fewer iterations, alpha within 0.1 %, not verified at 1e-7",
+     ("%d against %d iterations, %.9f against %.9f"):format(loose.iterations, def.iterations,
+                                                           loose.alpha, def.alpha))
+T.ok(tight.iterations > def.iterations and math.abs(tight.alpha - def.alpha) <= 1e-7 * def.alpha
+     and tight.verified and def.verified,
+     "lp_tolerance = 1e-12: more iterations, the default's alpha to 1e-7, both verified",
+     ("%d against %d iterations, %.12f against %.12f"):format(tight.iterations, def.iterations,
+                                                            tight.alpha, def.alpha))
+
 -- Above 10,000 rows, with two threads, the normal matrix is factored as two
 -- domains and a separator (doc/theory.md): the same alpha as one factor on
 -- one thread, to the engine's accuracy, and both verified.
