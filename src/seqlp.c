@@ -445,15 +445,6 @@ static double uniform(unsigned long long *state)
     return (double)(z >> 11) * 0x1.0p-53;
 }
 
-/* Another admissible stress state (the seed's Eq. 22): maximize a random
- * c . x, c uniform in [0, 1), over equilibrium and the Coulomb cone with
- * alpha fixed; its normal forces seed the next start.  The seed draws these
- * states at the current alpha; the caller draws alpha uniformly below the
- * best so far instead, because on a stack-bond wall (3 columns of 12
- * blocks, mu = 5) states at the best alpha, 0.5714, never led elsewhere,
- * while states below it led to certified answers down to 0.2078 in 20
- * starts.  The LP status in *status; -1 (err set) when the LP cannot be
- * made. */
 /* Solves the random state's LP on the cone system's bounds in clo, chi and
  * the objective obj (freeing *lp first); -1 when it cannot be made. */
 static int state_lp(run *r, const bl_solve_options *o, bl_lp **lp, bl_lp_status *st,
@@ -467,6 +458,15 @@ static int state_lp(run *r, const bl_solve_options *o, bl_lp **lp, bl_lp_status 
     return 0;
 }
 
+/* Another admissible stress state (the seed's Eq. 22): maximize a random
+ * c . x, c uniform in [0, 1), over equilibrium and the Coulomb cone with
+ * alpha fixed; its normal forces seed the next start.  The seed draws these
+ * states at the current alpha; the caller draws alpha uniformly below the
+ * best so far instead, because on a stack-bond wall (3 columns of 12
+ * blocks, mu = 5) states at the best alpha, 0.5714, never led elsewhere,
+ * while states below it led to certified answers down to 0.2078 in 20
+ * starts.  The LP status in *status; -1 (err set) when the LP cannot be
+ * made. */
 static int random_state(run *r, double alpha, unsigned long long *rng,
                         const bl_seqlp_options *o, bl_lp_status *status, bl_error *err)
 {
