@@ -5,6 +5,7 @@
 --   build/blocklim scripts/ensemble.lua walls       -- 30 running-bond walls
 --   build/blocklim scripts/ensemble.lua walls12     -- the 12 of the first table
 --   build/blocklim scripts/ensemble.lua domes       -- the 6 domes of section 14
+--   build/blocklim scripts/ensemble.lua bigdomes    -- 3 larger ones (about 4 minutes)
 --
 -- and again with OPENBLAS_CORETYPE=SkylakeX or Sandybridge for other
 -- round-off.  walls: one line, the interior point's iterations of the
@@ -15,9 +16,11 @@ package.path = "tests/lua/?.lua;" .. package.path
 local walls = require "walls"
 local which = arg[1] or "walls"
 
-if which == "domes" then
-  for _, d in ipairs { { 5, 16, 0.6 }, { 6, 16, 0.6 }, { 6, 20, 0.6 }, { 7, 16, 0.6 },
-                       { 5, 12, 0.65 }, { 8, 16, 0.65 } } do
+if which == "domes" or which == "bigdomes" then
+  local list = which == "domes"
+    and { { 5, 16, 0.6 }, { 6, 16, 0.6 }, { 6, 20, 0.6 }, { 7, 16, 0.6 }, { 5, 12, 0.65 }, { 8, 16, 0.65 } }
+    or { { 8, 24, 0.6 }, { 10, 24, 0.6 }, { 12, 32, 0.6 } }
+  for _, d in ipairs(list) do
     model { dim = 3, mu = d[3] }
     dome { radius = 2, thickness = 0.2, rings = d[1], segments = d[2] }
     local r = solve { flow = "nonassociative", progress = false }
