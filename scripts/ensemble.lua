@@ -16,11 +16,13 @@ package.path = "tests/lua/?.lua;" .. package.path
 local walls = require "walls"
 local which = arg[1] or "walls"
 
-if which == "domes" or which == "bigdomes" then
-  local list = which == "domes"
-    and { { 5, 16, 0.6 }, { 6, 16, 0.6 }, { 6, 20, 0.6 }, { 7, 16, 0.6 }, { 5, 12, 0.65 }, { 8, 16, 0.65 } }
-    or { { 8, 24, 0.6 }, { 10, 24, 0.6 }, { 12, 32, 0.6 } }
-  for _, d in ipairs(list) do
+-- rings, segments, mu
+local domes = {
+  domes = { { 5, 16, 0.6 }, { 6, 16, 0.6 }, { 6, 20, 0.6 }, { 7, 16, 0.6 }, { 5, 12, 0.65 }, { 8, 16, 0.65 } },
+  bigdomes = { { 8, 24, 0.6 }, { 10, 24, 0.6 }, { 12, 32, 0.6 } },
+}
+if domes[which] then
+  for _, d in ipairs(domes[which]) do
     model { dim = 3, mu = d[3] }
     dome { radius = 2, thickness = 0.2, rings = d[1], segments = d[2] }
     local r = solve { flow = "nonassociative", progress = false }
