@@ -1,6 +1,7 @@
 /* lp.c - the LP interface: dispatches to the engine chosen in the settings. */
 #include "lp.h"
 
+#include <omp.h>
 #include <stdlib.h>
 
 #include "lp_engine.h"
@@ -15,6 +16,13 @@ bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows, int ncols)
     if (asked != BL_LP_AUTO) return asked;
     int wide = ncols > BL_LP_AUTO_COLS && ncols > 5 * nrows;
     return nrows <= BL_LP_AUTO_ROWS && !wide ? BL_LP_SIMPLEX : BL_LP_IPM;
+}
+
+int bl_lp_leaves_core(bl_lp_engine_kind asked, int threads, int nrows, int ncols)
+{
+    if (omp_get_num_procs() < 2) return 0;
+    if (threads == 1 || bl_lp_choose(asked, nrows, ncols) == BL_LP_SIMPLEX) return 1;
+    return ncols < BL_IPM_PAR_COLS && nrows < BL_IPM_SPLIT_ROWS;
 }
 
 void bl_lp_settings_default(bl_lp_settings *s)

@@ -18,6 +18,15 @@ typedef struct bl_lp_backend {
     const double *(*ray)(const void *e);
 } bl_lp_backend;
 
+/* Where the interior point uses more than one core: its loops over the
+ * internal columns and its products with A from BL_IPM_PAR_COLS columns
+ * (below, the fork costs more than it gives: 1,040 blocks, 12,000
+ * columns, 0.17 s on one thread against 0.24 s on two), its two domains
+ * from BL_IPM_SPLIT_ROWS rows (below, one factorization is faster than
+ * two threads' wake-ups); doc/performance.md, "Threads". */
+#define BL_IPM_PAR_COLS 20000
+#define BL_IPM_SPLIT_ROWS 10000
+
 extern const bl_lp_backend bl_lp_clp_engine;
 extern const bl_lp_backend bl_lp_ipm_engine;
 

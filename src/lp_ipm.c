@@ -26,13 +26,12 @@
 
 /* The loops over the internal columns and the products with A and A^T run
  * on p->threads threads (OMP_NUM_THREADS or the processors, at most
- * MAX_THREADS) when there are enough columns to pay for the fork; CHOLMOD's
+ * MAX_THREADS) from BL_IPM_PAR_COLS columns (lp_engine.h); CHOLMOD's
  * factorization and solves stay on one (doc/performance.md, "Threads"). */
 #define MAX_THREADS 4
-#define PAR_MIN 20000
-#define PAR_FOR _Pragma("omp parallel for num_threads(p->threads) if (n >= PAR_MIN) schedule(static)")
+#define PAR_FOR _Pragma("omp parallel for num_threads(p->threads) if (n >= BL_IPM_PAR_COLS) schedule(static)")
 #define PAR_FOR_WITH(clauses) \
-    _Pragma(STR(omp parallel for num_threads(p->threads) if (n >= PAR_MIN) schedule(static) clauses))
+    _Pragma(STR(omp parallel for num_threads(p->threads) if (n >= BL_IPM_PAR_COLS) schedule(static) clauses))
 #define STR(x) #x
 
 enum { COL_LOWER, COL_BOXED };
@@ -290,7 +289,7 @@ static double dot(const double *a, const double *b, int n)
 static void mul_A(const ipm *p, const double *v, double *out)
 {
     int n = p->n, m = p->m;
-#pragma omp parallel num_threads(p->threads) if (n >= PAR_MIN)
+#pragma omp parallel num_threads(p->threads) if (n >= BL_IPM_PAR_COLS)
     {
         int t = omp_get_thread_num(), nt = omp_get_num_threads();
         double *o = t == 0 ? out : p->part + (size_t)(t - 1) * (size_t)m;

@@ -30,6 +30,7 @@
 
 #include <suitesparse/cholmod.h>
 
+#include "lp_engine.h"
 #include "normal.h"
 
 /* BLAS and LAPACK */
@@ -39,10 +40,6 @@ void dtrmv_(const char *uplo, const char *trans, const char *diag, const int *n,
 void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 void dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a, const int *lda,
              double *b, const int *ldb, int *info);
-
-/* Below this many rows one factorization is faster than two threads'
- * wake-ups (doc/performance.md, "Threads"). */
-enum { SPLIT_MIN_ROWS = 10000 };
 
 /* One CHOLMOD factorization: of the whole matrix, or of one domain with
  * the separator's ns rows last. */
@@ -293,7 +290,7 @@ bl_normal *bl_normal_analyse(const bl_normal_pattern *A, int threads, int verbos
         return NULL;
     }
     N->A = *A;
-    if (threads >= 2 && A->m >= SPLIT_MIN_ROWS && split(N) != 0) {
+    if (threads >= 2 && A->m >= BL_IPM_SPLIT_ROWS && split(N) != 0) {
         part_free(&N->p[0]);
         part_free(&N->p[1]);
         free(N->srow);

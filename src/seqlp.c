@@ -1,6 +1,7 @@
 #include "seqlp.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -36,6 +37,8 @@ typedef struct run {
     int shown;             /* a progress line is on the screen */
     int found;             /* a certified answer is kept in best_* */
     int least_n;           /* the fixed LPs prefer the least normal force */
+    int beside;            /* the LP of unlimited friction runs on thread */
+    pthread_t thread;
     double best_alpha, best_settled, *best_x, *best_y;
 } run;
 
@@ -524,6 +527,42 @@ static bl_system *rigid_system(const bl_model *m, const bl_cone *pyramid, bl_err
     return s;
 }
 
+/* The LP with unlimited friction, solved on the calling thread or another.
+ * It is made on the calling thread: METIS, which orders the interior
+ * point's factor when an LP is made, draws from one generator for the
+ * whole process, and two orderings at once changed the sequence's path. */
+typedef struct rigid_lp {
+    bl_system *system;
+    bl_lp *lp;
+    bl_lp_status status;
+} rigid_lp;
+
+static void *solve_rigid(void *arg)
+{
+    rigid_lp *j = arg;
+    j->status = bl_lp_solve(j->lp);
+    return NULL;
+}
+
+/* Waits for the LP with unlimited friction, puts its answer in s and frees
+ * it. */
+static void rigid_answer(run *r, rigid_lp *j, bl_solution *s)
+{
+    if (r->beside) pthread_join(r->thread, NULL);
+    r->beside = 0;
+    s->lps++;
+    if (j->lp) s->iterations += bl_lp_iterations(j->lp);
+    s->alpha_rigid = j->status == BL_LP_OPTIMAL     ? bl_lp_primal(j->lp)[j->system->nforce]
+                     : j->status == BL_LP_UNBOUNDED ? INFINITY
+                                                    : NAN;
+    s->assoc_is_solution = fabs(s->alpha_rigid - s->alpha_assoc) <=
+                           1e-7 * fmax(1.0, fabs(s->alpha_assoc));
+    bl_lp_free(j->lp);
+    bl_system_free(j->system);
+    j->lp = NULL;
+    j->system = NULL;
+}
+
 int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl_error *err)
 {
     double t0 = bl_clock();
@@ -563,6 +602,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     s->verified = 0;
 
     run r = {0};
+    rigid_lp rl = {.status = BL_LP_FAILED};
     r.t0 = t0;
     const bl_model *mc = s->model;
     r.cone = build(mc, &pyramid, BL_FRICTION_CONE, err);
@@ -594,23 +634,17 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     /* One LP with unlimited friction: when its alpha equals the associative
      * one, no joint's friction limits the collapse, and the associative
      * answer is itself a non-associative solution (a lower one may exist,
-     * so the search goes on). */
+     * so the search goes on).  Only the restarts depend on it: where the
+     * sequence's LPs leave a core idle, it runs there beside start 0
+     * (not with verbose, whose lines it would interleave). */
     if (sliding) {
-        bl_system *rigid = rigid_system(mc, &pyramid, err);
-        if (!rigid) goto fail;
-        bl_lp *lp = bl_solve_lp(rigid, rigid->lo, rigid->hi, NULL, &o->base, err);
-        bl_lp_status st = lp ? bl_lp_solve(lp) : BL_LP_FAILED;
-        s->lps++;
-        if (lp) s->iterations += bl_lp_iterations(lp);
-        s->alpha_rigid = st == BL_LP_OPTIMAL ? bl_lp_primal(lp)[rigid->nforce]
-                         : st == BL_LP_UNBOUNDED ? INFINITY : NAN;
-        s->assoc_is_solution = fabs(s->alpha_rigid - s->alpha_assoc) <=
-                               1e-7 * fmax(1.0, fabs(s->alpha_assoc));
-        bl_lp_free(lp);
-        bl_system_free(rigid);
-    } else {
-        s->alpha_rigid = s->alpha_assoc;
-        s->assoc_is_solution = 1;
+        rl.system = rigid_system(mc, &pyramid, err);
+        if (!rl.system) goto fail;
+        rl.lp = bl_solve_lp(rl.system, rl.system->lo, rl.system->hi, NULL, &o->base, err);
+        if (rl.lp && !o->base.verbose && strcmp(bl_lp_engine(rl.lp), "ipm") == 0 &&
+            bl_lp_leaves_core(o->base.lp, o->base.threads, r.fixed->nrows, r.fixed->ncols))
+            r.beside = pthread_create(&r.thread, NULL, solve_rigid, &rl) == 0;
+        if (rl.lp && !r.beside) solve_rigid(&rl);
     }
 
     /* Start 0 from the associative normal forces; then starts from random
@@ -618,17 +652,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     unsigned long long rng = o->seed;
     bl_lp_status stop = BL_LP_OPTIMAL;
     /* Without sliding joints the first LP settles and certifies at once.
-     * By default (starts < 0) 10 restarts when unlimited friction gives
-     * the associative alpha: start 0 then certifies the associative
-     * answer, and restarts found lower ones in every case measured
-     * (doc/seqlp.md: W1, the stack-bond wall), at 0.05-0.2 s for 10 on
-     * small walls; else restarts only while none has certified
-     * (BL_SEQLP_RETRIES). */
-    int retry = sliding && o->starts < 0 && !s->assoc_is_solution &&
-                r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
-    int starts = !sliding ? 0 : o->starts >= 0 ? o->starts : s->assoc_is_solution ? 10
-                                                            : retry ? BL_SEQLP_RETRIES : 0;
-    for (int k = 0; k <= starts && stop == BL_LP_OPTIMAL && !(retry && r.found); k++) {
+     * How many restarts follow is decided after start 0 (below). */
+    int retry = 0, starts = 0;
+    for (int k = 0; k == 0 || (k <= starts && stop == BL_LP_OPTIMAL && !(retry && r.found)); k++) {
         double from = r.found ? r.best_alpha : s->alpha_assoc;
         int lps0 = s->lps, its0 = s->iterations + r.iterations;
         double tk = bl_clock();
@@ -662,6 +688,24 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         st->iterations = s->iterations + r.iterations - its0;
         st->seconds = bl_clock() - tk;
         if (done < 0) goto fail;
+        if (k == 0) {
+            if (!sliding) {
+                s->alpha_rigid = s->alpha_assoc;
+                s->assoc_is_solution = 1;
+            } else {
+                rigid_answer(&r, &rl, s);
+            }
+            /* By default (starts < 0) 10 restarts when unlimited friction
+             * gives the associative alpha: start 0 then certifies the
+             * associative answer, and restarts found lower ones in every
+             * case measured (doc/seqlp.md: W1, the stack-bond wall), at
+             * 0.05-0.2 s for 10 on small walls; else restarts only while
+             * none has certified (BL_SEQLP_RETRIES). */
+            retry = sliding && o->starts < 0 && !s->assoc_is_solution &&
+                    r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
+            starts = !sliding ? 0 : o->starts >= 0 ? o->starts : s->assoc_is_solution ? 10
+                                                     : retry ? BL_SEQLP_RETRIES : 0;
+        }
     }
 
     if (stop == BL_LP_INTERRUPTED) {
@@ -709,6 +753,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     *out = s;
     return 0;
 fail:
+    if (r.beside) pthread_join(r.thread, NULL);
+    bl_lp_free(rl.lp);
+    bl_system_free(rl.system);
     run_free(&r);
     bl_solution_free(s);
     return -1;
