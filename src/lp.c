@@ -71,4 +71,9 @@ const double *bl_lp_dual(const bl_lp *lp) { return lp->engine->dual(lp->impl); }
 int bl_lp_iterations(const bl_lp *lp) { return lp->engine->iterations(lp->impl); }
 double bl_lp_factor_nnz(const bl_lp *lp) { return lp->engine->factor_nnz(lp->impl); }
 const double *bl_lp_ray(const bl_lp *lp) { return lp->engine->ray(lp->impl); }
+int bl_lp_mark(bl_lp *lp) { return lp->engine->mark ? lp->engine->mark(lp->impl) : -1; }
+void bl_lp_rewind(bl_lp *lp)
+{
+    if (lp->engine->rewind) lp->engine->rewind(lp->impl);
+}
 const char *bl_lp_engine(const bl_lp *lp) { return lp->engine->name; }

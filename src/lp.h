@@ -93,6 +93,16 @@ int bl_lp_iterations(const bl_lp *lp);
  * none.  Rows with large |y| are the ones whose equilibrium cannot be met. */
 const double *bl_lp_ray(const bl_lp *lp);
 
+/* A solve that turns out not to be needed (one solved ahead of a decision
+ * that then made it unnecessary) can be taken back as far as later solves
+ * see it: bl_lp_mark remembers where the next warm start would begin,
+ * bl_lp_rewind returns there, and the solves after it run as if the one in
+ * between had not been made (its answer is gone too: copy what is needed
+ * first).  bl_lp_mark returns -1 when the engine cannot (the simplex, whose
+ * warm start is its basis). */
+int bl_lp_mark(bl_lp *lp);
+void bl_lp_rewind(bl_lp *lp);
+
 /* Non-zeros of the interior point's Cholesky factor (0 for the simplex). */
 double bl_lp_factor_nnz(const bl_lp *lp);
 /* Writes p to file in MPS format, as the minimization of -obj (free MPS

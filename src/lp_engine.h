@@ -16,6 +16,8 @@ typedef struct bl_lp_backend {
     int (*iterations)(const void *e);
     double (*factor_nnz)(const void *e);
     const double *(*ray)(const void *e);
+    int (*mark)(void *e);    /* NULL: the engine cannot (lp.h, bl_lp_mark) */
+    void (*rewind)(void *e);
 } bl_lp_backend;
 
 /* Where the interior point uses more than one core: its loops over the

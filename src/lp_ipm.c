@@ -73,6 +73,9 @@ typedef struct ipm {
      * and the iterate's mean product mu */
     double *kx, *kzl, *kzu, *ky, ka, kmu;
     int kept;           /* the point above is set */
+    /* bl_lp_mark's copy of warm, kept and the point above */
+    double *mx, *mzl, *mzu, *my, ma, mmu;
+    int mwarm, mkept;
     bl_lp_status last;  /* the status of the last solve */
     double *yprev, *at; /* early_infeasible: the last y, A^T (y - yprev) */
 } ipm;
@@ -90,7 +93,7 @@ static void destroy(void *e)
                     &p->rhat, &p->xz,    &p->sw, &p->v,    &p->tmp,  &p->xu,  &p->yu,
                     &p->dir.x,  &p->dir.z,   &p->dir.s, &p->dir.w, &p->dir.y,  &p->cor.x, &p->cor.z,
                     &p->cor.s,  &p->cor.w,   &p->cor.y, &p->ntmp, &p->part,
-                    &p->kx, &p->kzl, &p->kzu, &p->ky};
+                    &p->kx, &p->kzl, &p->kzu, &p->ky, &p->mx, &p->mzl, &p->mzu, &p->my};
     for (size_t i = 0; i < sizeof d / sizeof *d; i++) free(*d[i]);
     free(p->map);
     free(p->kind);
@@ -896,6 +899,46 @@ static double factor_nnz(const void *e)
     return p->N ? bl_normal_nnz(p->N) : 0.0;
 }
 
+/* bl_lp_mark, bl_lp_rewind: all that a solve leaves to the next is the
+ * warm flag and the kept iterate (the bounds are set again before it). */
+static int mark(void *e)
+{
+    ipm *p = e;
+    size_t nu = (size_t)p->nu, m = (size_t)p->m;
+    if (!p->mx) {
+        p->mx = xcalloc(nu, sizeof *p->mx);
+        p->mzl = xcalloc(nu, sizeof *p->mzl);
+        p->mzu = xcalloc(nu, sizeof *p->mzu);
+        p->my = xcalloc(m, sizeof *p->my);
+        if (!p->mx || !p->mzl || !p->mzu || !p->my) return -1;
+    }
+    memcpy(p->mx, p->kx, nu * sizeof *p->mx);
+    memcpy(p->mzl, p->kzl, nu * sizeof *p->mzl);
+    memcpy(p->mzu, p->kzu, nu * sizeof *p->mzu);
+    memcpy(p->my, p->ky, m * sizeof *p->my);
+    p->ma = p->ka;
+    p->mmu = p->kmu;
+    p->mwarm = p->warm;
+    p->mkept = p->kept;
+    return 0;
+}
+
+static void rewind_to_mark(void *e)
+{
+    ipm *p = e;
+    size_t nu = (size_t)p->nu, m = (size_t)p->m;
+    if (!p->mx) return;
+    memcpy(p->kx, p->mx, nu * sizeof *p->kx);
+    memcpy(p->kzl, p->mzl, nu * sizeof *p->kzl);
+    memcpy(p->kzu, p->mzu, nu * sizeof *p->kzu);
+    memcpy(p->ky, p->my, m * sizeof *p->ky);
+    p->ka = p->ma;
+    p->kmu = p->mmu;
+    p->warm = p->mwarm;
+    p->kept = p->mkept;
+}
+
 const bl_lp_backend bl_lp_ipm_engine = {
     "ipm", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz, ray,
+    mark, rewind_to_mark,
 };

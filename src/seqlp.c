@@ -37,9 +37,10 @@ typedef struct run {
     int shown;             /* a progress line is on the screen */
     int found;             /* a certified answer is kept in best_* */
     int least_n;           /* the fixed LPs prefer the least normal force */
-    int beside;            /* the LP of unlimited friction runs on thread */
-    pthread_t thread;
+    int rigid_beside;      /* the LP of unlimited friction runs on rigid_thread */
+    pthread_t rigid_thread;
     double best_alpha, best_settled, *best_x, *best_y;
+    double *yc;            /* a settled LP's mechanism, for its certificate */
 } run;
 
 static void run_free(run *r)
@@ -63,6 +64,7 @@ static void run_free(run *r)
     free(r->obj);
     free(r->best_x);
     free(r->best_y);
+    free(r->yc);
 }
 
 /* The systems of the run: in 3D on bl_seqlp_pyramid. */
@@ -323,6 +325,86 @@ static void name_blocks(run *r, bl_solution *s, int lp)
         snprintf(s->note + len, sizeof s->note - len, " and %d more", named - 8);
 }
 
+/* After LP j (forces x, mechanism y, alpha a; the alpha before it prev):
+ * the damping of beta and the cohesion and normal forces of the next LP. */
+static void relax(run *r, const bl_seqlp_options *o, int j, const double *x, const double *y,
+                  double a, double prev, double *beta, double *last, int *turns)
+{
+    const bl_system *f = r->fixed;
+    /* Damping: from the 21st LP on, every third reversal of alpha halves
+     * beta, down to a tenth of it.  The first 20 keep beta: a sequence
+     * converges or swings on to another solution there (the stack-bond
+     * wall's lower answer came from such a swing); one that keeps
+     * oscillating (the corner model: +-0.3 % for 100 LPs) then slows down
+     * until a certificate succeeds (doc/seqlp.md 6). */
+    if (fabs(a - prev) > o->settle * fabs(a)) {
+        if (j >= 20 && (a - prev) * *last < 0.0 && ++*turns % 3 == 0 && *beta > 0.1 * o->beta)
+            *beta *= 0.5;
+        *last = a - prev;
+    }
+    /* relax the cohesion towards none where this LP's mechanism opens a
+     * joint, as the certificate and the verification take it: kept whole,
+     * an opening joint's cohesion let the LPs lean on a force the
+     * certificate refuses, and W4 with cohesion 0.02 or 0.05 did not
+     * certify (doc/seqlp.md 10) */
+    if (r->cohesive) {
+        double V = point_motion(r, y);
+        for (int p = 0; p < f->npoints; p++) {
+            double keep = bl_system_joint_opening(f, r->dn, p) > o->slip * V ? 0.0 : f->cohesion[p];
+            r->coh[p] = (1.0 - *beta) * r->coh[p] + *beta * keep;
+        }
+    }
+    /* relax the normal forces towards this LP's */
+    for (int p = 0; p < f->npoints; p++) r->n[p] *= 1.0 - *beta;
+    for (int k = 0; k < f->nforce; k++)
+        if (f->col_kind[k] == BL_COL_NORMAL) r->n[f->col_point[k]] += *beta * x[k];
+}
+
+/* Keeps a certificate's answer (alpha ac, of the LP at a with mechanism
+ * y; its forces in lp_cone) when it is the lowest yet. */
+static void keep_certified(run *r, bl_solution *s, double ac, double a, const double *y)
+{
+    s->start[s->nstarts - 1].alpha = ac;
+    if (r->found && ac >= r->best_alpha) return;
+    r->found = 1;
+    r->best_alpha = ac;
+    r->best_settled = a;
+    memcpy(r->best_x, bl_lp_primal(r->lp_cone), (size_t)r->cone->ncols * sizeof *r->best_x);
+    memcpy(r->best_y, y, (size_t)r->fixed->nrows * sizeof *r->best_y);
+}
+
+/* A certificate on another thread (certify, beside the next fixed LP). */
+typedef struct beside_cert {
+    run *r;
+    double alpha, cert;
+    const double *y;
+    const bl_seqlp_options *o;
+    bl_solution *s;
+    bl_lp_status status;
+    bl_error err;
+} beside_cert;
+
+static void *certify_beside(void *arg)
+{
+    beside_cert *c = arg;
+    c->status = certify(c->r, c->alpha, c->y, c->o, c->s, &c->cert, &c->err);
+    return NULL;
+}
+
+/* Whether the certificate of a settled LP can run beside the next fixed
+ * LP: both on the interior point, each leaving the other a core (lp.h),
+ * and no verbose lines to interleave.  Most certificates fail and the next
+ * LP is needed anyway; when one passes, that LP is taken back
+ * (bl_lp_rewind), so every start, LP and answer is the one-thread run's. */
+static int certify_ahead(const run *r, const bl_seqlp_options *o)
+{
+    const bl_solve_options *b = &o->base;
+    return !b->verbose && strcmp(bl_lp_engine(r->lp_fixed), "ipm") == 0 &&
+           bl_lp_choose(b->lp, r->cone->nrows, r->cone->ncols) == BL_LP_IPM &&
+           bl_lp_leaves_core(b->lp, b->threads, r->fixed->nrows, r->fixed->ncols) &&
+           bl_lp_leaves_core(b->lp, b->threads, r->cone->nrows, r->cone->ncols);
+}
+
 /* One start: LPs with fixed shear capacities from the normal forces r->n
  * until alpha settles and a certificate is found (returns 1, and keeps the
  * answer in r->best when it is the lowest yet), the cap is reached or an LP
@@ -335,15 +417,20 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
     *stop = BL_LP_OPTIMAL;
     double beta = o->beta, last = 0.0;
     int turns = 0;
+    int ahead = 0; /* LP j was solved beside the certificate of LP j - 1 */
+    bl_lp_status st = BL_LP_OPTIMAL;
     for (int j = 0; j < o->max_lps; j++) {
-        bl_system_fixed_bounds(f, r->n, r->coh, r->lo, r->hi);
-        if (!r->lp_fixed) {
-            r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
-            if (!r->lp_fixed) return -1;
-        } else {
-            bl_lp_set_bounds(r->lp_fixed, r->lo, r->hi);
+        if (!ahead) {
+            bl_system_fixed_bounds(f, r->n, r->coh, r->lo, r->hi);
+            if (!r->lp_fixed) {
+                r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
+                if (!r->lp_fixed) return -1;
+            } else {
+                bl_lp_set_bounds(r->lp_fixed, r->lo, r->hi);
+            }
+            st = bl_lp_solve(r->lp_fixed);
         }
-        bl_lp_status st = bl_lp_solve(r->lp_fixed);
+        ahead = 0;
         if ((st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) && !r->least_n &&
             strcmp(bl_lp_engine(r->lp_fixed), "ipm") == 0) {
             /* Blocks confined between supports (a wall between two
@@ -385,19 +472,32 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
             r->shown = 1;
         }
         if (fabs(a - prev) <= o->settle * fabs(a)) {
-            double ac;
-            bl_lp_status cs = certify(r, a, y, o, s, &ac, err);
-            if (cs == BL_LP_FAILED && !r->lp_cone) return -1;
+            bl_lp_status cs;
+            beside_cert c = {.r = r, .alpha = a, .y = r->yc, .o = o, .s = s};
+            pthread_t other;
+            if (j + 1 < o->max_lps && certify_ahead(r, o) && bl_lp_mark(r->lp_fixed) == 0) {
+                /* the certificate on another thread, the next LP here */
+                memcpy(r->yc, y, (size_t)f->nrows * sizeof *r->yc);
+                relax(r, o, j, x, y, a, prev, &beta, &last, &turns);
+                bl_system_fixed_bounds(f, r->n, r->coh, r->lo, r->hi);
+                bl_lp_set_bounds(r->lp_fixed, r->lo, r->hi);
+                int two = pthread_create(&other, NULL, certify_beside, &c) == 0;
+                if (!two) certify_beside(&c);
+                st = bl_lp_solve(r->lp_fixed);
+                if (two) pthread_join(other, NULL);
+                cs = c.status;
+                ahead = cs == BL_LP_INFEASIBLE;
+                if (!ahead) bl_lp_rewind(r->lp_fixed);
+                y = r->yc;
+            } else {
+                cs = certify(r, a, y, o, s, &c.cert, &c.err);
+            }
+            if (cs == BL_LP_FAILED && !r->lp_cone) {
+                bl_error_set(err, "%s", c.err.msg);
+                return -1;
+            }
             if (cs == BL_LP_OPTIMAL) {
-                s->start[s->nstarts - 1].alpha = ac;
-                if (!r->found || ac < r->best_alpha) {
-                    r->found = 1;
-                    r->best_alpha = ac;
-                    r->best_settled = a;
-                    memcpy(r->best_x, bl_lp_primal(r->lp_cone),
-                           (size_t)r->cone->ncols * sizeof *r->best_x);
-                    memcpy(r->best_y, y, (size_t)f->nrows * sizeof *r->best_y);
-                }
+                keep_certified(r, s, c.cert, a, y);
                 return 1;
             }
             if (cs != BL_LP_INFEASIBLE) {
@@ -405,33 +505,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
                 return 0;
             }
         }
-        /* Damping: from the 21st LP on, every third reversal of alpha
-         * halves beta, down to a tenth of it.  The first 20 keep beta: a
-         * sequence converges or swings on to another solution there (the
-         * stack-bond wall's lower answer came from such a swing); one
-         * that keeps oscillating (the corner model: +-0.3 % for 100 LPs)
-         * then slows down until a certificate succeeds (doc/seqlp.md 6). */
-        if (fabs(a - prev) > o->settle * fabs(a)) {
-            if (j >= 20 && (a - prev) * last < 0.0 && ++turns % 3 == 0 && beta > 0.1 * o->beta)
-                beta *= 0.5;
-            last = a - prev;
-        }
-        /* relax the cohesion towards none where this LP's mechanism opens
-         * a joint, as the certificate and the verification take it: kept
-         * whole, an opening joint's cohesion let the LPs lean on a force
-         * the certificate refuses, and W4 with cohesion 0.02 or 0.05 did
-         * not certify (doc/seqlp.md 10) */
-        if (r->cohesive) {
-            double V = point_motion(r, y);
-            for (int p = 0; p < f->npoints; p++) {
-                double keep = bl_system_joint_opening(f, r->dn, p) > o->slip * V ? 0.0 : f->cohesion[p];
-                r->coh[p] = (1.0 - beta) * r->coh[p] + beta * keep;
-            }
-        }
-        /* relax the normal forces towards this LP's */
-        for (int p = 0; p < f->npoints; p++) r->n[p] *= 1.0 - beta;
-        for (int k = 0; k < f->nforce; k++)
-            if (f->col_kind[k] == BL_COL_NORMAL) r->n[f->col_point[k]] += beta * x[k];
+        if (!ahead) relax(r, o, j, x, y, a, prev, &beta, &last, &turns);
         prev = a;
     }
     return 0;
@@ -548,8 +622,8 @@ static void *solve_rigid(void *arg)
  * it. */
 static void rigid_answer(run *r, rigid_lp *j, bl_solution *s)
 {
-    if (r->beside) pthread_join(r->thread, NULL);
-    r->beside = 0;
+    if (r->rigid_beside) pthread_join(r->rigid_thread, NULL);
+    r->rigid_beside = 0;
     s->lps++;
     if (j->lp) s->iterations += bl_lp_iterations(j->lp);
     s->alpha_rigid = j->status == BL_LP_OPTIMAL     ? bl_lp_primal(j->lp)[j->system->nforce]
@@ -625,8 +699,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.w = malloc((size_t)(nc > ncc ? nc : ncc) * sizeof *r.w);
     r.best_x = malloc((size_t)ncc * sizeof *r.best_x);
     r.best_y = malloc((size_t)r.fixed->nrows * sizeof *r.best_y);
+    r.yc = malloc((size_t)r.fixed->nrows * sizeof *r.yc);
     if (!r.n || !r.dn || !r.dt || !r.dt3 || !r.resist || !r.speed || !r.coh || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
-        !r.best_x || !r.best_y) {
+        !r.best_x || !r.best_y || !r.yc) {
         bl_error_set(err, "solve: out of memory");
         goto fail;
     }
@@ -643,8 +718,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         rl.lp = bl_solve_lp(rl.system, rl.system->lo, rl.system->hi, NULL, &o->base, err);
         if (rl.lp && !o->base.verbose && strcmp(bl_lp_engine(rl.lp), "ipm") == 0 &&
             bl_lp_leaves_core(o->base.lp, o->base.threads, r.fixed->nrows, r.fixed->ncols))
-            r.beside = pthread_create(&r.thread, NULL, solve_rigid, &rl) == 0;
-        if (rl.lp && !r.beside) solve_rigid(&rl);
+            r.rigid_beside = pthread_create(&r.rigid_thread, NULL, solve_rigid, &rl) == 0;
+        if (rl.lp && !r.rigid_beside) solve_rigid(&rl);
     }
 
     /* Start 0 from the associative normal forces; then starts from random
@@ -753,7 +828,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     *out = s;
     return 0;
 fail:
-    if (r.beside) pthread_join(r.thread, NULL);
+    if (r.rigid_beside) pthread_join(r.rigid_thread, NULL);
     bl_lp_free(rl.lp);
     bl_system_free(rl.system);
     run_free(&r);

@@ -7,7 +7,10 @@
  * load multiplier held above W4's associative 0.331948, where no
  * equilibrium exists, it ends sooner, and its ray, checked on the matrix,
  * proves that an equilibrium would need more than ten times the forces of
- * one at 0.3; at 0.3 itself it solves as without it. */
+ * one at 0.3; at 0.3 itself it solves as without it.
+ * Rewinding (bl_lp_mark, bl_lp_rewind): a solve taken back leaves no trace
+ * on the next one, whose iterations and answer are those of the same two
+ * solves made without it, to the last bit. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -177,12 +180,77 @@ static void early_ray(void **state)
     bl_system_free(s);
 }
 
+/* The W4 LP with every force column at least lo: the bounds of a re-solve. */
+static void floor_bounds(const bl_system *s, double lo, double *out)
+{
+    memcpy(out, s->lo, (size_t)s->ncols * sizeof *out);
+    for (int j = 0; j < s->nforce; j++)
+        if (out[j] == 0.0) out[j] = lo;
+}
+
+static void rewind_solve(void **state)
+{
+    (void)state;
+    bl_system *s = w4();
+    double *b = malloc((size_t)s->ncols * sizeof *b), *c = malloc((size_t)s->ncols * sizeof *c);
+    floor_bounds(s, 5e-3, b); /* the solve taken back */
+    floor_bounds(s, 1e-3, c); /* the one after it */
+
+    bl_lp *straight = make(s, s->lo, BL_LP_IPM);
+    assert_int_equal(bl_lp_solve(straight), BL_LP_OPTIMAL);
+    bl_lp_set_bounds(straight, c, s->hi);
+    assert_int_equal(bl_lp_solve(straight), BL_LP_OPTIMAL);
+
+    bl_lp *back = make(s, s->lo, BL_LP_IPM);
+    assert_int_equal(bl_lp_solve(back), BL_LP_OPTIMAL);
+    assert_int_equal(bl_lp_mark(back), 0);
+    bl_lp_set_bounds(back, b, s->hi);
+    assert_int_equal(bl_lp_solve(back), BL_LP_OPTIMAL);
+    double ab = bl_lp_primal(back)[s->nforce];
+    int ib = bl_lp_iterations(back);
+    bl_lp_rewind(back);
+    bl_lp_set_bounds(back, c, s->hi);
+    assert_int_equal(bl_lp_solve(back), BL_LP_OPTIMAL);
+
+    /* without the rewind the third solve starts elsewhere */
+    bl_lp *on = make(s, s->lo, BL_LP_IPM);
+    assert_int_equal(bl_lp_solve(on), BL_LP_OPTIMAL);
+    bl_lp_set_bounds(on, b, s->hi);
+    assert_int_equal(bl_lp_solve(on), BL_LP_OPTIMAL);
+    bl_lp_set_bounds(on, c, s->hi);
+    assert_int_equal(bl_lp_solve(on), BL_LP_OPTIMAL);
+
+    double as = bl_lp_primal(straight)[s->nforce], ar = bl_lp_primal(back)[s->nforce];
+    print_message("# taken back: alpha %.10f in %d iterations; then alpha %.17g in %d "
+                  "iterations, %.17g in %d without it, %.17g in %d not taken back\n",
+                  ab, ib, ar, bl_lp_iterations(back), as, bl_lp_iterations(straight),
+                  bl_lp_primal(on)[s->nforce], bl_lp_iterations(on));
+    assert_true(ab != as); /* the solve taken back had another answer */
+    assert_int_equal(bl_lp_iterations(back), bl_lp_iterations(straight));
+    assert_memory_equal(bl_lp_primal(back), bl_lp_primal(straight), (size_t)s->ncols * sizeof(double));
+    assert_memory_equal(bl_lp_dual(back), bl_lp_dual(straight), (size_t)s->nrows * sizeof(double));
+    assert_true(bl_lp_iterations(on) != bl_lp_iterations(back) ||
+                memcmp(bl_lp_primal(on), bl_lp_primal(back), (size_t)s->ncols * sizeof(double)) != 0);
+
+    /* the simplex has no such state to keep */
+    bl_lp *simplex = make(s, s->lo, BL_LP_SIMPLEX);
+    assert_int_equal(bl_lp_mark(simplex), -1);
+    bl_lp_free(simplex);
+    bl_lp_free(straight);
+    bl_lp_free(back);
+    bl_lp_free(on);
+    free(b);
+    free(c);
+    bl_system_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(simplex),
         cmocka_unit_test(interior_point),
         cmocka_unit_test(early_ray),
+        cmocka_unit_test(rewind_solve),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
