@@ -778,12 +778,18 @@ static int pmain(lua_State *L)
  * every x86-64 processor with AVX2 and FMA the program takes OpenBLAS's
  * Haswell kernels, as fast here per iteration as the AVX-512 ones, and a
  * model gives the same answer, LP for LP, on every such machine
- * (doc/performance.md, "Kernels and round-off"). */
+ * (doc/performance.md, "Kernels and round-off").
+ *
+ * OpenBLAS starts a thread per further core when it loads, which spins for
+ * about 0.1 s of CPU before it sleeps; nothing here ever hands BLAS work to
+ * it (bl_one_thread, error.h), so it is not started. */
 static void fixed_environment(char **argv)
 {
     int changed = 0;
     if (!getenv("OMP_WAIT_POLICY") && !getenv("GOMP_SPINCOUNT"))
         changed |= setenv("GOMP_SPINCOUNT", "3000", 1) == 0;
+    if (!getenv("OPENBLAS_NUM_THREADS"))
+        changed |= setenv("OPENBLAS_NUM_THREADS", "1", 1) == 0;
 #if defined(__x86_64__) && defined(__GNUC__)
     if (!getenv("OPENBLAS_CORETYPE") && __builtin_cpu_supports("avx2") &&
         __builtin_cpu_supports("fma"))
