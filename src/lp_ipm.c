@@ -41,6 +41,15 @@ typedef struct step {
     double *x, *z, *s, *w, *y, a;
 } step;
 
+/* An iterate of a solve's path, kept in user terms for the next warm
+ * start: x, the duals of its lower and upper bounds, y, the border a and
+ * the iterate's mean product mu. */
+typedef struct kept {
+    double *x, *zl, *zu, *y, a, mu;
+    int set;            /* the point is set */
+    int warm;           /* the last solve was optimal: start from the point */
+} kept;
+
 typedef struct ipm {
     bl_lp_settings set;
     /* the user's problem: bounds, right-hand side and objective copied */
@@ -67,15 +76,8 @@ typedef struct ipm {
     int iterations;
     int factorizations, solves;    /* counted for the verbose summary */
     double factor_time, solve_time;
-    int warm;           /* the last solve was optimal: start from kept */
-    /* an iterate of a solve's path, kept in user terms for the next warm
-     * start: x, the duals of its lower and upper bounds, y, the border,
-     * and the iterate's mean product mu */
-    double *kx, *kzl, *kzu, *ky, ka, kmu;
-    int kept;           /* the point above is set */
-    /* bl_lp_mark's copy of warm, kept and the point above */
-    double *mx, *mzl, *mzu, *my, ma, mmu;
-    int mwarm, mkept;
+    kept k;             /* for the next warm start */
+    kept saved;         /* bl_lp_mark's copy of k */
     bl_lp_status last;  /* the status of the last solve */
     double *yprev, *at; /* early_infeasible: the last y, A^T (y - yprev) */
 } ipm;
@@ -93,7 +95,7 @@ static void destroy(void *e)
                     &p->rhat, &p->xz,    &p->sw, &p->v,    &p->tmp,  &p->xu,  &p->yu,
                     &p->dir.x,  &p->dir.z,   &p->dir.s, &p->dir.w, &p->dir.y,  &p->cor.x, &p->cor.z,
                     &p->cor.s,  &p->cor.w,   &p->cor.y, &p->ntmp, &p->part,
-                    &p->kx, &p->kzl, &p->kzu, &p->ky, &p->mx, &p->mzl, &p->mzu, &p->my};
+                    &p->k.x, &p->k.zl, &p->k.zu, &p->k.y, &p->saved.x, &p->saved.zl, &p->saved.zu, &p->saved.y};
     for (size_t i = 0; i < sizeof d / sizeof *d; i++) free(*d[i]);
     free(p->map);
     free(p->kind);
@@ -230,16 +232,16 @@ static void *create(const bl_lp_problem *pr, const bl_lp_settings *s, bl_error *
     p->v = xcalloc(m, sizeof *p->v);
     p->tmp = xcalloc(m, sizeof *p->tmp);
     p->yu = xcalloc(m, sizeof *p->yu);
-    p->kx = xcalloc(nu, sizeof *p->kx);
-    p->kzl = xcalloc(nu, sizeof *p->kzl);
-    p->kzu = xcalloc(nu, sizeof *p->kzu);
-    p->ky = xcalloc(m, sizeof *p->ky);
+    p->k.x = xcalloc(nu, sizeof *p->k.x);
+    p->k.zl = xcalloc(nu, sizeof *p->k.zl);
+    p->k.zu = xcalloc(nu, sizeof *p->k.zu);
+    p->k.y = xcalloc(m, sizeof *p->k.y);
     int procs = s->threads > 0 ? s->threads : omp_get_max_threads();
     p->threads = procs < 1 ? 1 : procs > MAX_THREADS ? MAX_THREADS : procs;
     p->part = xcalloc(m * (size_t)(p->threads - 1), sizeof *p->part);
     if (!p->lo || !p->hi || !p->obj || !p->shift || !p->xu ||
         !p->rhs || !p->b || !p->g || !p->y || !p->dir.y || !p->cor.y || !p->rp || !p->v || !p->tmp || !p->yu || !p->part ||
-        !p->kx || !p->kzl || !p->kzu || !p->ky) {
+        !p->k.x || !p->k.zl || !p->k.zu || !p->k.y) {
         bl_error_set(err, "lp: out of memory");
         destroy(p);
         return NULL;
@@ -526,34 +528,34 @@ static int starting_point(ipm *p)
 
 static void keep_point(ipm *p, double mu)
 {
-    for (int j = 0; j < p->nu; j++) p->kx[j] = p->shift[j];
+    for (int j = 0; j < p->nu; j++) p->k.x[j] = p->shift[j];
     for (int k = 0; k < p->n; k++) {
         int j = p->map[k];
-        p->kx[j] += p->sign[k] * p->x[k];
-        if (p->sign[k] > 0.0) p->kzl[j] = p->z[k];
-        else p->kzu[j] = p->z[k];
-        if (p->kind[k] == COL_BOXED) p->kzu[j] = p->w[k];
+        p->k.x[j] += p->sign[k] * p->x[k];
+        if (p->sign[k] > 0.0) p->k.zl[j] = p->z[k];
+        else p->k.zu[j] = p->z[k];
+        if (p->kind[k] == COL_BOXED) p->k.zu[j] = p->w[k];
     }
-    if (p->border >= 0) p->kx[p->border] = p->a;
-    memcpy(p->ky, p->y, (size_t)p->m * sizeof *p->ky);
-    p->ka = p->a;
-    p->kmu = mu;
-    p->kept = 1;
+    if (p->border >= 0) p->k.x[p->border] = p->a;
+    memcpy(p->k.y, p->y, (size_t)p->m * sizeof *p->k.y);
+    p->k.a = p->a;
+    p->k.mu = mu;
+    p->k.set = 1;
 }
 
 static void warm_point(ipm *p)
 {
     int n = p->n;
-    double mu = p->kmu;
-    memcpy(p->y, p->ky, (size_t)p->m * sizeof *p->y);
+    double mu = p->k.mu;
+    memcpy(p->y, p->k.y, (size_t)p->m * sizeof *p->y);
     PAR_FOR
     for (int k = 0; k < n; k++) {
         int j = p->map[k];
-        double v = p->sign[k] * (p->kx[j] - p->shift[j]);
-        p->z[k] = fmax(p->sign[k] > 0.0 ? p->kzl[j] : p->kzu[j], mu);
+        double v = p->sign[k] * (p->k.x[j] - p->shift[j]);
+        p->z[k] = fmax(p->sign[k] > 0.0 ? p->k.zl[j] : p->k.zu[j], mu);
         p->x[k] = fmax(v, mu / p->z[k]);
         if (p->kind[k] == COL_BOXED) {
-            p->w[k] = fmax(p->kzu[j], mu);
+            p->w[k] = fmax(p->k.zu[j], mu);
             double gap = mu / p->w[k];
             if (p->x[k] > p->U[k] - gap) p->x[k] = fmax(p->U[k] - gap, 0.5 * p->U[k]);
             p->s[k] = fmax(p->U[k] - p->x[k], gap);
@@ -563,7 +565,7 @@ static void warm_point(ipm *p)
         }
         p->z[k] = fmin(p->z[k], KEEP_CAP * mu / p->x[k]);
     }
-    p->a = p->ka;
+    p->a = p->k.a;
 }
 
 static void answers(ipm *p)
@@ -641,7 +643,7 @@ static bl_lp_status solve(void *e)
     double stall_ep = INFINITY; /* the last real fall of the primal residual */
     int stall_ep_it = 0;
     int ray_run = 0; /* iterations in a row that passed ray_test */
-    if (p->warm && p->kept) warm_point(p);
+    if (p->k.warm && p->k.set) warm_point(p);
     else if (starting_point(p)) status = BL_LP_FAILED;
     for (int it = 0; status == BL_LP_ITERATION_LIMIT && it < p->set.max_iterations; it++) {
         if (bl_interrupt_pending()) { status = BL_LP_INTERRUPTED; break; }
@@ -876,7 +878,7 @@ static bl_lp_status solve(void *e)
         fprintf(stderr, "ipm: %d iterations in %.3f s: %d factorizations %.3f s, %d solves %.3f s\n",
                 p->iterations, bl_clock() - t0, p->factorizations, p->factor_time, p->solves,
                 p->solve_time);
-    p->warm = status == BL_LP_OPTIMAL;
+    p->k.warm = status == BL_LP_OPTIMAL;
     p->last = status;
     return status;
 }
@@ -899,43 +901,40 @@ static double factor_nnz(const void *e)
     return p->N ? bl_normal_nnz(p->N) : 0.0;
 }
 
-/* bl_lp_mark, bl_lp_rewind: all that a solve leaves to the next is the
- * warm flag and the kept iterate (the bounds are set again before it). */
+/* bl_lp_mark, bl_lp_rewind: all that a solve leaves to the next is k
+ * (the bounds are set again before it). */
+static void copy_kept(kept *to, const kept *from, size_t nu, size_t m)
+{
+    memcpy(to->x, from->x, nu * sizeof *to->x);
+    memcpy(to->zl, from->zl, nu * sizeof *to->zl);
+    memcpy(to->zu, from->zu, nu * sizeof *to->zu);
+    memcpy(to->y, from->y, m * sizeof *to->y);
+    to->a = from->a;
+    to->mu = from->mu;
+    to->set = from->set;
+    to->warm = from->warm;
+}
+
 static int mark(void *e)
 {
     ipm *p = e;
     size_t nu = (size_t)p->nu, m = (size_t)p->m;
-    if (!p->mx) {
-        p->mx = xcalloc(nu, sizeof *p->mx);
-        p->mzl = xcalloc(nu, sizeof *p->mzl);
-        p->mzu = xcalloc(nu, sizeof *p->mzu);
-        p->my = xcalloc(m, sizeof *p->my);
-        if (!p->mx || !p->mzl || !p->mzu || !p->my) return -1;
+    kept *c = &p->saved;
+    if (!c->x) {
+        c->x = xcalloc(nu, sizeof *c->x);
+        c->zl = xcalloc(nu, sizeof *c->zl);
+        c->zu = xcalloc(nu, sizeof *c->zu);
+        c->y = xcalloc(m, sizeof *c->y);
+        if (!c->x || !c->zl || !c->zu || !c->y) return -1;
     }
-    memcpy(p->mx, p->kx, nu * sizeof *p->mx);
-    memcpy(p->mzl, p->kzl, nu * sizeof *p->mzl);
-    memcpy(p->mzu, p->kzu, nu * sizeof *p->mzu);
-    memcpy(p->my, p->ky, m * sizeof *p->my);
-    p->ma = p->ka;
-    p->mmu = p->kmu;
-    p->mwarm = p->warm;
-    p->mkept = p->kept;
+    copy_kept(c, &p->k, nu, m);
     return 0;
 }
 
 static void rewind_to_mark(void *e)
 {
     ipm *p = e;
-    size_t nu = (size_t)p->nu, m = (size_t)p->m;
-    if (!p->mx) return;
-    memcpy(p->kx, p->mx, nu * sizeof *p->kx);
-    memcpy(p->kzl, p->mzl, nu * sizeof *p->kzl);
-    memcpy(p->kzu, p->mzu, nu * sizeof *p->kzu);
-    memcpy(p->ky, p->my, m * sizeof *p->ky);
-    p->ka = p->ma;
-    p->kmu = p->mmu;
-    p->warm = p->mwarm;
-    p->kept = p->mkept;
+    if (p->saved.x) copy_kept(&p->k, &p->saved, (size_t)p->nu, (size_t)p->m);
 }
 
 const bl_lp_backend bl_lp_ipm_engine = {
