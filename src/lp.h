@@ -35,11 +35,13 @@ typedef enum bl_lp_engine_kind {
 #define BL_LP_AUTO_COLS 2000
 bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows, int ncols);
 
-/* 1 when this machine has a core that an LP of nrows x ncols on the engine
- * chosen for "asked", with the given threads (0: every core), leaves
- * idle: the simplex runs on one core, the interior point on one below the
- * sizes where it threads its loops and splits its factor (lp_engine.h).
- * Another computation can then run beside it without slowing it much. */
+/* 1 when the threads allowed (threads, 0: OMP_NUM_THREADS or every core)
+ * are two or more, on two or more cores, and an LP of nrows x ncols on the
+ * engine chosen for "asked" keeps only one of them busy: the simplex
+ * always, the interior point below the sizes where it threads its loops
+ * and splits its factor (lp_engine.h).  Another computation can then run
+ * beside it without slowing it much; threads = 1 keeps a whole solve on
+ * one core. */
 int bl_lp_leaves_core(bl_lp_engine_kind asked, int threads, int nrows, int ncols);
 
 typedef struct bl_lp_settings {
