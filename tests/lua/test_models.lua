@@ -10,11 +10,20 @@ local expected = {
   w4_3d = 0.33195, w5_3d = 0.23964, -- one block thick, loaded in their plane
 }
 local results = {}
+-- the scripts' printed results as TAP comments
+local print_tap = print
+local function comment(...)
+  local t = table.pack(...)
+  for i = 1, t.n do t[i] = tostring(t[i]) end
+  io.write((("# " .. table.concat(t, "\t")):gsub("\n", "\n# ")), "\n")
+end
 for _, name in ipairs { "w1", "w4", "w5", "block", "arch", "facade", "vault", "dome", "w4_3d", "w5_3d", "corner" } do
   local png = ("%s/blocklim_model_%s.png"):format(tmp, name)
   os.remove(png)
   arg = { [0] = dir .. "models/" .. name .. ".lua", png }
+  print = comment
   local r = dofile(arg[0])
+  print = print_tap
   T.eq(r.status, "optimal", name .. ": optimal")
   T.ok(r.verified, name .. ": verified")
   if expected[name] then
