@@ -873,8 +873,10 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         lua_createtable(L, s->nstarts, 0);
         for (int k = 0; k < s->nstarts; k++) {
             const bl_start *st = &s->start[k];
-            lua_createtable(L, 0, 5);
+            lua_createtable(L, 0, 7);
             set_integer(L, "lps", st->lps);
+            set_integer(L, "certificates", st->certificates);
+            set_integer(L, "nearest", st->nearest);
             set_integer(L, "iterations", st->iterations);
             set_number(L, "time", st->seconds);
             set_boolean(L, "certified", st->alpha == st->alpha);
@@ -1029,7 +1031,7 @@ static int model_solve(lua_State *L)
         "flow",     "method", "lp",    "tolerance", "time_limit",      "iterations", "verbose",
         "mps",      "beta",   "settle", "slip",     "lps",             "starts",     "seed",
         "progress", "start",  "penalty", "complementarity", "cone",       "threads",
-        "lp_tolerance", NULL};
+        "lp_tolerance", "nearest", NULL};
     static const char *const flows[] = {"associative", "nonassociative", NULL};
     static const char *const methods[] = {"assoc", "seqlp", "mpec", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
@@ -1078,10 +1080,15 @@ static int model_solve(lua_State *L)
     if (seed != floor(seed) || seed > 9e15)
         fail(L, "solve: field 'seed' must be a non-negative integer, got %g", seed);
     so.seed = (unsigned long long)seed;
+    double nearest = number_field(L, 2, "solve", "nearest", -1, NONNEG);
+    if (nearest != floor(nearest) || nearest > 1e6 || (nearest < 0 && field_given(L, 2, "nearest")))
+        fail(L, "solve: field 'nearest' must be a non-negative integer, got %g", nearest);
+    so.nearest = (int)nearest;
     so.progress = boolean_field(L, 2, "solve", "progress", isatty(STDERR_FILENO));
     so.when_sliding = !field_given(L, 2, "method") && !field_given(L, 2, "flow");
-    if ((field_given(L, 2, "starts") || field_given(L, 2, "seed")) && method == ASSOC)
-        fail(L, "solve: fields 'starts' and 'seed' go with flow = \"nonassociative\"");
+    if ((field_given(L, 2, "starts") || field_given(L, 2, "seed") ||
+         field_given(L, 2, "nearest")) && method == ASSOC)
+        fail(L, "solve: fields 'starts', 'seed' and 'nearest' go with flow = \"nonassociative\"");
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;
     bl_solve_options_default(&o);

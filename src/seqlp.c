@@ -19,6 +19,7 @@ void bl_seqlp_options_default(bl_seqlp_options *o)
     o->max_lps = 100;
     o->starts = -1;
     o->seed = 1;
+    o->nearest = -1;
     o->progress = 0;
     o->when_sliding = 0;
 }
@@ -415,6 +416,59 @@ static void relax(run *r, const bl_seqlp_options *o, int j, const double *x, con
         if (f->col_kind[k] == BL_COL_NORMAL) r->n[f->col_point[k]] += *beta * x[k];
 }
 
+/* The nearest forces, after a failed certificate of the LP at alpha a
+ * with mechanism y: forces in Coulomb's cone at that alpha that fit the
+ * mechanism as the certificate asks, except that the columns it forbids
+ * (the cone's edges where a point opens, and with the slip where it
+ * slides) are allowed at a cost of one per unit: the least total force on
+ * them.  Their normal forces become the next LP's, unrelaxed (seqlp.h,
+ * BL_SEQLP_NEAREST; doc/seqlp.md 12).  The LP is made for the occasion:
+ * its objective changes with the forbidden columns.  Unless it is
+ * optimal r->n stays the relaxed one.  Returns 0, or -1 when the LP could
+ * not be made (err). */
+static int nearest_forces(run *r, double a, const double *y, const bl_seqlp_options *o,
+                                   bl_solution *s, bl_error *err)
+{
+    const bl_system *c = r->cone;
+    int na = c->nforce;
+    certificate_bounds(r, y, o->slip);
+    for (int j = 0; j < c->ncols; j++) r->obj[j] = 0.0;
+    for (int j = 0; j < na; j++) {
+        int k = c->col_kind[j];
+        if ((k == BL_COL_CONE_POS || k == BL_COL_CONE_NEG || k == BL_COL_PYRAMID) &&
+            r->chi[j] == 0.0 && c->hi[j] > 0.0) {
+            r->clo[j] = c->lo[j];
+            r->chi[j] = c->hi[j];
+            r->obj[j] = -1.0; /* maximized: the least force */
+        }
+    }
+    r->clo[na] = r->chi[na] = a;
+    bl_lp *lp = bl_solve_lp(c, r->clo, r->chi, r->obj, &o->base, err);
+    if (!lp) return -1;
+    bl_lp_status st = bl_lp_solve(lp);
+    s->lps++;
+    s->iterations += bl_lp_iterations(lp);
+    s->start[s->nstarts - 1].nearest++;
+    double lent = 0.0;
+    if (st == BL_LP_OPTIMAL) {
+        const double *x = bl_lp_primal(lp);
+        for (int p = 0; p < r->fixed->npoints; p++) r->n[p] = 0.0;
+        for (int j = 0; j < na; j++) {
+            r->n[c->col_point[j]] += c->col_nt[c->dim * j] * x[j];
+            if (r->obj[j] != 0.0) lent += x[j];
+        }
+    }
+    if (o->base.verbose) {
+        if (st == BL_LP_OPTIMAL)
+            fprintf(stderr, "seqlp nearest forces: %.4g W0 on the forbidden columns\n", lent);
+        else
+            fprintf(stderr, "seqlp nearest forces: %s, the relaxed ones kept\n",
+                    st == BL_LP_INFEASIBLE ? "infeasible" : "no answer");
+    }
+    bl_lp_free(lp);
+    return 0;
+}
+
 /* Keeps a certificate's answer (alpha ac, of the LP at a with mechanism
  * y; its forces in r->xc) when it is the lowest yet. */
 static void keep_certified(run *r, bl_solution *s, double ac, double a, const double *y)
@@ -473,6 +527,8 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
     double beta = o->beta, last = 0.0;
     int turns = 0;
     int ahead = 0; /* LP j was solved beside the certificate of LP j - 1 */
+    int fails = 0; /* failed certificates of this start */
+    int nearest = o->nearest >= 0 ? o->nearest : r->cone->dim == 2 ? BL_SEQLP_NEAREST : 0;
     bl_lp_status st = BL_LP_OPTIMAL;
     for (int j = 0; j < o->max_lps; j++) {
         if (!ahead) {
@@ -530,7 +586,11 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
             bl_lp_status cs;
             beside_cert c = {.r = r, .alpha = a, .y = r->yc, .o = o, .s = s};
             pthread_t other;
-            if (j + 1 < o->max_lps && certify_ahead(r, o) && bl_lp_mark(r->lp_fixed) == 0) {
+            /* the next LP waits for the nearest forces once they follow */
+            int near_next = nearest > 0 && fails + 1 >= nearest;
+            s->start[s->nstarts - 1].certificates++;
+            if (j + 1 < o->max_lps && !near_next && certify_ahead(r, o) &&
+                bl_lp_mark(r->lp_fixed) == 0) {
                 /* the certificate on another thread, the next LP here */
                 memcpy(r->yc, y, (size_t)f->nrows * sizeof *r->yc);
                 relax(r, o, j, x, y, a, prev, &beta, &last, &turns);
@@ -558,6 +618,15 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
             if (cs != BL_LP_INFEASIBLE) {
                 *stop = cs;
                 return 0;
+            }
+            fails++;
+            if (near_next) {
+                /* damping and cohesion as after any LP, then the normal
+                 * forces from the nearest forces instead */
+                relax(r, o, j, x, y, a, prev, &beta, &last, &turns);
+                if (nearest_forces(r, a, y, o, s, err)) return -1;
+                prev = a;
+                continue;
             }
         }
         if (!ahead) relax(r, o, j, x, y, a, prev, &beta, &last, &turns);

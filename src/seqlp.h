@@ -23,6 +23,10 @@ typedef struct bl_seqlp_options {
                               until one certifies, on models of at most
                               BL_SEQLP_RETRY_ROWS rows */
     unsigned long long seed; /* of those random states */
+    int nearest;           /* after this many failed certificates of a start,
+                              each further one is followed by the nearest
+                              forces; 0: never; < 0: BL_SEQLP_NEAREST in 2D,
+                              never in 3D */
     int progress;          /* show start, LP and alpha on stderr after 0.5 s */
     int when_sliding;      /* solve's default: without a joint of finite, non-zero
                               friction, return the associative answer alone */
@@ -39,6 +43,19 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * none has certified it). */
 #define BL_SEQLP_RETRIES 3
 #define BL_SEQLP_RETRY_ROWS 10000
+
+/* A start whose certificates keep failing while alpha has settled is
+ * caught in a slow mode of the relaxation (the 10,050-block wall: the
+ * normal forces at the sliding points moved by 2-3 % per LP and none of
+ * 100 LPs certified).  From its BL_SEQLP_NEAREST-th failed certificate on,
+ * each failed certificate is followed by the nearest forces: the forces
+ * at the LP's alpha that fit its mechanism but for the least total force
+ * on the columns the certificate forbids, whose normal forces the next LP
+ * takes whole.  Not after the first or second: the 2,525-block wall, whose
+ * one failed certificate is followed by a passing one, took 34 LPs with it
+ * against 19.  Not in 3D: the dome of the tests no longer certified
+ * (doc/seqlp.md 12). */
+#define BL_SEQLP_NEAREST 3
 
 /* The pyramid the 3D sequence of LPs (and the direct solve) runs on: the
  * one asked for when it has an even number of facets (its section at n is

@@ -63,6 +63,7 @@ typedef struct bl_timings {
 typedef struct bl_start {
     int first;
     int lps, iterations;
+    int certificates, nearest; /* certificates tried, nearest-force steps */
     double seconds;
     double alpha;
 } bl_start;

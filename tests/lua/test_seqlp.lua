@@ -191,6 +191,23 @@ for _, seed in ipairs { 1, 4, 7, 11, 18 } do
 end
 T.ok(#bad == 0, ("%d random walls at three mu: certified, verified, not above the associative alpha"):format(all),
      table.concat(bad, " "))
+-- The nearest forces after failed certificates (BL_SEQLP_NEAREST): random
+-- wall 8 at mu = 1 on the interior point fails two certificates and
+-- passes the third, so by default (after the third failure) no nearest
+-- step is taken; with nearest = 1 one follows the first failure.  Either
+-- way the answer must solve Eq. 12 (verified) below the associative one.
+do
+  model { mu = 1.0 }
+  wall { courses = walls.random(8), unit = { 0.4, 0.175 } }
+  local d = solve { flow = "nonassociative", starts = 0, lp = "ipm" }
+  local n = solve { flow = "nonassociative", starts = 0, lp = "ipm", nearest = 1 }
+  T.eq(d.starts[1].nearest, 0, "nearest forces: none by default where the third certificate passes")
+  T.ok(n.starts[1].nearest >= 1 and n.starts[1].certificates >= 2,
+       "nearest = 1: a nearest step after the first failed certificate",
+       ("%d steps, %d certificates"):format(n.starts[1].nearest, n.starts[1].certificates))
+  T.ok(n.certified and n.verified and n.alpha <= n.alpha_assoc * (1 + 1e-9),
+       ("nearest = 1: certified, verified, alpha %.5f <= associative %.5f"):format(n.alpha, n.alpha_assoc))
+end
 -- cohesion: W4 0.2 thick with cohesion 0.02 and 0.05 certifies on both
 -- engines, below its associative alpha, which cohesion raises above the
 -- 0.33195 without (before the sequence relaxed the cohesion of joints its
