@@ -528,7 +528,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
     int turns = 0;
     int ahead = 0; /* LP j was solved beside the certificate of LP j - 1 */
     int fails = 0; /* failed certificates of this start */
-    int nearest = o->nearest >= 0 ? o->nearest : r->cone->dim == 2 ? BL_SEQLP_NEAREST : 0;
+    int nearest = o->nearest >= 0 ? o->nearest : BL_SEQLP_NEAREST;
     bl_lp_status st = BL_LP_OPTIMAL;
     for (int j = 0; j < o->max_lps; j++) {
         if (!ahead) {
