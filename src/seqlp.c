@@ -311,8 +311,8 @@ static bl_lp_status certify(run *r, double alpha, const double *y, const bl_seql
      * leaned on motions taken as none (lean_work).  The lowest alpha with a
      * cost of rho times that work, for rho = 10, 100, 1000 until one
      * passes, is kept instead when it is lower, or passes where nothing did
-     * (the 4,935-block wall: 0.42931 at rho = 1000 against 0.43178, with
-     * work and dilatancy residuals of 5.5e-7 and 1.4e-6, doc/seqlp.md 12). */
+     * (the 4,935-block wall: 0.42272 at rho = 100 against 0.43178 at the
+     * LP's alpha, doc/seqlp.md 12). */
     for (double rho = 10.0; rho <= 1000.0; rho *= 10.0) {
         certificate_bounds(r, y, used);
         bl_lp_status sl = certificate_lp(r, &so->base, rho, s, err);
@@ -427,7 +427,7 @@ static void relax(run *r, const bl_seqlp_options *o, int j, const double *x, con
  * optimal r->n stays the relaxed one.  Returns 0, or -1 when the LP could
  * not be made (err). */
 static int nearest_forces(run *r, double a, const double *y, const bl_seqlp_options *o,
-                                   bl_solution *s, bl_error *err)
+                          bl_solution *s, bl_error *err)
 {
     const bl_system *c = r->cone;
     int na = c->nforce;
