@@ -27,6 +27,11 @@ function Result.__tostring(r)
     say("  associative alpha = %.6g%s; %d LPs in the sequence%s", r.alpha_assoc,
         r.certified and "" or " (an upper bound on the non-associative one)", r.lps,
         r.certified and not r.interrupted and ", the last one its certificate" or "")
+    local tried, near = 0, 0
+    for _, st in ipairs(r.starts) do tried, near = tried + st.certificates, near + st.nearest end
+    if near > 0 then
+      say("  %d certificates tried; the nearest forces after %d that failed", tried, near)
+    end
     if r.alpha_settled and math.abs(r.alpha_settled - r.alpha) > 1e-9 * math.abs(r.alpha) then
       say("  the sequence settled at %.6g; its mechanism is a solution from %.6g, the lowest alpha",
           r.alpha_settled, r.alpha)
