@@ -593,6 +593,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
             fprintf(stderr, "\rseqlp: start %d, LP %d, alpha %.6g   ", s->nstarts, j + 1, a);
             r->shown = 1;
         }
+        int near_now = 0; /* the nearest forces follow this LP's failed certificate */
         if (fabs(a - prev) <= o->settle * fabs(a)) {
             bl_lp_status cs;
             beside_cert c = {.r = r, .alpha = a, .y = r->yc, .o = o, .s = s};
@@ -631,16 +632,11 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
                 return 0;
             }
             fails++;
-            if (near_next) {
-                /* damping and cohesion as after any LP, then the normal
-                 * forces from the nearest forces instead */
-                relax(r, o, j, x, y, a, prev, &beta, &last, &turns);
-                if (nearest_forces(r, a, y, o, s, err)) return -1;
-                prev = a;
-                continue;
-            }
+            near_now = near_next;
         }
         if (!ahead) relax(r, o, j, x, y, a, prev, &beta, &last, &turns);
+        /* damping and cohesion as relaxed, the normal forces the nearest */
+        if (near_now && nearest_forces(r, a, y, o, s, err)) return -1;
         prev = a;
     }
     return 0;
