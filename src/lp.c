@@ -77,4 +77,9 @@ void bl_lp_rewind(bl_lp *lp)
 {
     if (lp->engine->rewind) lp->engine->rewind(lp->impl);
 }
+int bl_lp_warm(bl_lp *lp, const double *x, const double *zl, const double *zu, const double *y,
+               double mu)
+{
+    return lp->engine->warm ? lp->engine->warm(lp->impl, x, zl, zu, y, mu) : -1;
+}
 const char *bl_lp_engine(const bl_lp *lp) { return lp->engine->name; }

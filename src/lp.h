@@ -105,6 +105,15 @@ const double *bl_lp_ray(const bl_lp *lp);
 int bl_lp_mark(bl_lp *lp);
 void bl_lp_rewind(bl_lp *lp);
 
+/* The next solve starts from the interior point x (ncols; alpha among them)
+ * with the duals zl, zu of the lower and upper bounds (ncols; 0 where a
+ * bound is infinite), the row multipliers y (nrows, the sign of
+ * bl_lp_dual) and mean product mu: a point of the path of another problem
+ * that is near this LP's (napath.h).  -1 when the engine cannot (the
+ * simplex). */
+int bl_lp_warm(bl_lp *lp, const double *x, const double *zl, const double *zu, const double *y,
+               double mu);
+
 /* Non-zeros of the interior point's Cholesky factor (0 for the simplex). */
 double bl_lp_factor_nnz(const bl_lp *lp);
 /* Writes p to file in MPS format, as the minimization of -obj (free MPS

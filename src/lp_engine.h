@@ -18,6 +18,8 @@ typedef struct bl_lp_backend {
     const double *(*ray)(const void *e);
     int (*mark)(void *e);    /* NULL: the engine cannot (lp.h, bl_lp_mark) */
     void (*rewind)(void *e);
+    int (*warm)(void *e, const double *x, const double *zl, const double *zu, const double *y,
+                double mu); /* NULL: the engine cannot (lp.h, bl_lp_warm) */
 } bl_lp_backend;
 
 /* Where the interior point uses more than one core: its loops over the

@@ -48,6 +48,7 @@ typedef struct kept {
     double *x, *zl, *zu, *y, a, mu;
     int set;            /* the point is set */
     int warm;           /* the last solve was optimal: start from the point */
+    int foreign;        /* set by bl_lp_warm, not by a solve */
 } kept;
 
 typedef struct ipm {
@@ -643,6 +644,8 @@ static bl_lp_status solve(void *e)
     double stall_ep = INFINITY; /* the last real fall of the primal residual */
     int stall_ep_it = 0;
     int ray_run = 0; /* iterations in a row that passed ray_test */
+    int foreign = p->k.foreign; /* the start is another problem's point */
+    p->k.foreign = 0;
     if (p->k.warm && p->k.set) warm_point(p);
     else if (starting_point(p)) status = BL_LP_FAILED;
     for (int it = 0; status == BL_LP_ITERATION_LIMIT && it < p->set.max_iterations; it++) {
@@ -690,8 +693,15 @@ static bl_lp_status solve(void *e)
             break;
         }
         if (keep && it >= 1 && fmax(fmax(ep, eu), fmax(ed, eg)) <= KEEP_AT) {
+            /* a solve that began far below the level, from another
+             * problem's point (bl_lp_warm), keeps its first iterate with
+             * the products raised to it: at its own level the next bound
+             * change would leave it off centre (the 1,040-block wall's
+             * sequence from the path: re-solves of 20 and 17 iterations
+             * instead of 8) */
+            double level = fmax(fmax(ep, eu), fmax(ed, eg));
             keep = 0;
-            keep_point(p, mu);
+            keep_point(p, foreign && level < 0.1 * KEEP_AT ? mu * KEEP_AT / fmax(level, 1e-12) : mu);
         }
         /* A stalled gap: feasible to the tolerance, mu falling, the gap
          * not.  On an unbounded optimal face (blocks confined between
@@ -937,7 +947,23 @@ static void rewind_to_mark(void *e)
     if (p->saved.x) copy_kept(&p->k, &p->saved, (size_t)p->nu, (size_t)p->m);
 }
 
+/* bl_lp_warm: the point becomes the kept one (in the internal signs: y
+ * for minimizing -obj). */
+static int warm(void *e, const double *x, const double *zl, const double *zu, const double *y,
+                double mu)
+{
+    ipm *p = e;
+    memcpy(p->k.x, x, (size_t)p->nu * sizeof *x);
+    memcpy(p->k.zl, zl, (size_t)p->nu * sizeof *zl);
+    memcpy(p->k.zu, zu, (size_t)p->nu * sizeof *zu);
+    for (int i = 0; i < p->m; i++) p->k.y[i] = -y[i];
+    p->k.a = p->border >= 0 ? x[p->border] : 0.0;
+    p->k.mu = mu;
+    p->k.set = p->k.warm = p->k.foreign = 1;
+    return 0;
+}
+
 const bl_lp_backend bl_lp_ipm_engine = {
     "ipm", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz, ray,
-    mark, rewind_to_mark,
+    mark, rewind_to_mark, warm,
 };

@@ -856,6 +856,14 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         set_boolean(L, "interrupted", s->interrupted);
         set_integer(L, "lps", s->lps);
         set_number(L, "slip", s->slip);
+        if (s->path_steps > 0) {
+            lua_createtable(L, 0, 4);
+            set_integer(L, "steps", s->path_steps);
+            set_number(L, "alpha", s->path_alpha);
+            set_number(L, "products", s->path_products);
+            set_number(L, "time", s->path_seconds);
+            lua_setfield(L, -2, "path");
+        }
         /* history[k] = the alphas of start k, from the alpha it began at;
          * starts[k] = what start k cost and what it certified */
         lua_createtable(L, s->nstarts, 0);
@@ -1031,7 +1039,7 @@ static int model_solve(lua_State *L)
         "flow",     "method", "lp",    "tolerance", "time_limit",      "iterations", "verbose",
         "mps",      "beta",   "settle", "slip",     "lps",             "starts",     "seed",
         "progress", "start",  "penalty", "complementarity", "cone",       "threads",
-        "lp_tolerance", "nearest", NULL};
+        "lp_tolerance", "nearest", "path", NULL};
     static const char *const flows[] = {"associative", "nonassociative", NULL};
     static const char *const methods[] = {"assoc", "seqlp", "mpec", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
@@ -1085,10 +1093,11 @@ static int model_solve(lua_State *L)
         fail(L, "solve: field 'nearest' must be a non-negative integer, got %g", nearest);
     so.nearest = (int)nearest;
     so.progress = boolean_field(L, 2, "solve", "progress", isatty(STDERR_FILENO));
+    so.path = field_given(L, 2, "path") ? boolean_field(L, 2, "solve", "path", 0) : -1;
     so.when_sliding = !field_given(L, 2, "method") && !field_given(L, 2, "flow");
     if ((field_given(L, 2, "starts") || field_given(L, 2, "seed") ||
-         field_given(L, 2, "nearest")) && method == ASSOC)
-        fail(L, "solve: fields 'starts', 'seed' and 'nearest' go with flow = \"nonassociative\"");
+         field_given(L, 2, "nearest") || field_given(L, 2, "path")) && method == ASSOC)
+        fail(L, "solve: fields 'starts', 'seed', 'nearest' and 'path' go with flow = \"nonassociative\"");
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;
     bl_solve_options_default(&o);

@@ -7,7 +7,9 @@
 #include <string.h>
 
 #include "assemble.h"
+#include "contact.h"
 #include "lp.h"
+#include "napath.h"
 #include "verify.h"
 
 void bl_seqlp_options_default(bl_seqlp_options *o)
@@ -20,6 +22,7 @@ void bl_seqlp_options_default(bl_seqlp_options *o)
     o->starts = -1;
     o->seed = 1;
     o->nearest = -1;
+    o->path = -1;
     o->progress = 0;
     o->when_sliding = 0;
 }
@@ -45,7 +48,25 @@ typedef struct run {
     double best_alpha, best_settled, *best_x, *best_y;
     double *yc;            /* a settled LP's mechanism, for its certificate */
     double *xc;            /* the certificate's forces (certify) */
+    const struct path_job *warm; /* the point the first fixed LP starts from, or NULL */
 } run;
+
+/* The path of the non-associative problem, followed on the calling
+ * thread or beside the associative solve. */
+typedef struct path_job {
+    bl_system *system;
+    double *x, *zl, *zu, *y; /* its last point (napath.h) */
+    int verbose, status, beside;
+    bl_napath_result res;
+    bl_error err;
+    pthread_t thread;
+} path_job;
+
+/* The first fixed LP starts from the path's point (lp.h, bl_lp_warm). */
+static void path_warm(const path_job *j, bl_lp *lp)
+{
+    bl_lp_warm(lp, j->x, j->zl, j->zu, j->y, j->res.mu);
+}
 
 static void run_free(run *r)
 {
@@ -547,6 +568,8 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
             if (!r->lp_fixed) {
                 r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
                 if (!r->lp_fixed) return -1;
+                if (r->warm) path_warm(r->warm, r->lp_fixed);
+                r->warm = NULL;
             } else {
                 bl_lp_set_bounds(r->lp_fixed, r->lo, r->hi);
             }
@@ -768,6 +791,86 @@ static void rigid_answer(run *r, rigid_lp *j, bl_solution *s)
     j->system = NULL;
 }
 
+
+static void *run_path(void *arg)
+{
+    path_job *j = arg;
+    j->status = bl_napath_run(j->system, BL_SEQLP_PATH_PRODUCTS, BL_SEQLP_PATH_STEPS, j->verbose,
+                              j->x, j->zl, j->zu, j->y, &j->res, &j->err);
+    return NULL;
+}
+
+static void path_free(path_job *j)
+{
+    if (j->beside) pthread_join(j->thread, NULL);
+    j->beside = 0;
+    bl_system_free(j->system);
+    free(j->x);
+    free(j->zl);
+    free(j->zu);
+    free(j->y);
+    j->system = NULL;
+    j->x = j->zl = j->zu = j->y = NULL;
+}
+
+/* Starts the path for m (2D, its contacts detected) when o asks for it and
+ * it applies: beside the associative solve where the LPs leave a core
+ * idle, else at once.  -1 with err set when the system cannot be made. */
+static int path_start(bl_model *m, const bl_seqlp_options *o, path_job *j, bl_error *err)
+{
+    j->status = 1;
+    if (!o->path || m->dim != 2) return 0;
+    j->system = bl_system_build(m, BL_FRICTION_FIXED, err);
+    if (!j->system) return -1;
+    const bl_system *f = j->system;
+    /* by default only where the fixed LPs run on the interior point (from
+     * the path the simplex's sequences took more LPs on W1 and W4 and
+     * ended higher on W5) and up to BL_SEQLP_PATH_ROWS (doc/seqlp.md 15) */
+    if (o->path < 0 &&
+        (bl_lp_choose(o->base.lp, f->nrows, f->ncols) != BL_LP_IPM || f->nrows > BL_SEQLP_PATH_ROWS)) {
+        path_free(j);
+        return 0;
+    }
+    size_t nc = (size_t)j->system->ncols, nr = (size_t)j->system->nrows;
+    if (bl_napath_applies(j->system)) {
+        j->x = malloc(nc * sizeof *j->x);
+        j->zl = malloc(nc * sizeof *j->zl);
+        j->zu = malloc(nc * sizeof *j->zu);
+        j->y = malloc(nr * sizeof *j->y);
+    }
+    if (!j->x || !j->zl || !j->zu || !j->y) {
+        path_free(j);
+        return 0;
+    }
+    j->verbose = o->base.verbose;
+    if (!o->base.verbose && bl_lp_leaves_core(o->base.lp, o->base.threads, f->nrows, f->ncols))
+        j->beside = pthread_create(&j->thread, NULL, run_path, j) == 0;
+    if (!j->beside) run_path(j);
+    return 0;
+}
+
+/* Waits for the path; when it went well, its normal forces in r->n, its
+ * point as the first fixed LP's start (r->warm) and its record in s.  -1
+ * with err set when it ran out of memory. */
+static int path_answer(path_job *j, run *r, bl_solution *s, bl_error *err)
+{
+    if (!j->system) return 0;
+    if (j->beside) pthread_join(j->thread, NULL);
+    j->beside = 0;
+    if (j->status < 0) return bl_error_set(err, "%s", j->err.msg);
+    const bl_system *f = j->system;
+    if (j->status != 0 || f->ncols != r->fixed->ncols || f->nrows != r->fixed->nrows) return 0;
+    for (int p = 0; p < f->npoints; p++) r->n[p] = 0.0;
+    for (int k = 0; k < f->nforce; k++)
+        if (f->col_kind[k] == BL_COL_NORMAL) r->n[f->col_point[k]] = j->x[k];
+    r->warm = j;
+    s->path_steps = j->res.iterations;
+    s->path_alpha = j->res.alpha;
+    s->path_products = j->res.complementarity;
+    s->path_seconds = j->res.seconds;
+    return 0;
+}
+
 int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl_error *err)
 {
     double t0 = bl_clock();
@@ -784,7 +887,16 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     bl_solve_options base = o->base;
     bl_cone pyramid = bl_seqlp_pyramid(&o->base.cone);
     if (m->dim == 3) base.cone = pyramid;
-    if (bl_assoc_solve(m, &base, &s, err)) return -1;
+    double detection = bl_clock();
+    if (!m->contacts_valid && bl_contact_detect(m, err)) return -1;
+    detection = bl_clock() - detection;
+    path_job pj = {0};
+    if (path_start(m, o, &pj, err)) return -1;
+    if (bl_assoc_solve(m, &base, &s, err)) {
+        path_free(&pj);
+        return -1;
+    }
+    s->time.detection += detection;
     /* Only joints with finite, non-zero friction dilate: without any, the
      * associative answer is the non-associative one.  Without an
      * associative answer there is nothing to start from: that result is
@@ -795,6 +907,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         sliding |= isfinite(mu) && mu > 0.0;
     }
     if ((!sliding && o->when_sliding) || (s->status != BL_OPTIMAL && s->status != BL_UNSTABLE)) {
+        path_free(&pj);
         *out = s;
         return 0;
     }
@@ -867,6 +980,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         double tk = bl_clock();
         if (k == 0) {
             for (int p = 0; p < np; p++) r.n[p] = s->force[mc->dim * p] / r.fixed->W0;
+            if (path_answer(&pj, &r, s, err)) goto fail;
         } else {
             bl_lp_status st;
             if (random_state(&r, uniform(&rng) * from, &rng, o, &st, err)) goto fail;
@@ -954,12 +1068,14 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     s->iterations += r.iterations;
     if (r.lp_fixed) s->lp = bl_lp_engine(r.lp_fixed);
     if (r.shown) fprintf(stderr, "\r%60s\r", "");
+    path_free(&pj);
     run_free(&r);
     s->time.total = bl_clock() - t0;
     s->time.solve = s->time.total - s->time.detection - s->time.assembly - s->time.verification;
     *out = s;
     return 0;
 fail:
+    path_free(&pj);
     if (r.rigid_beside) pthread_join(r.rigid_thread, NULL);
     bl_lp_free(rl.lp);
     bl_system_free(rl.system);

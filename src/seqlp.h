@@ -26,6 +26,11 @@ typedef struct bl_seqlp_options {
     int nearest;           /* after this many failed certificates of a start,
                               each further one is followed by the nearest
                               forces; 0: never; < 0: BL_SEQLP_NEAREST */
+    int path;              /* start 0 from the point of the path of the
+                              non-associative problem (napath.h) where it
+                              applies, instead of the associative forces: 1
+                              yes, 0 no, < 0 where the fixed LPs run on the
+                              interior point */
     int progress;          /* show start, LP and alpha on stderr after 0.5 s */
     int when_sliding;      /* solve's default: without a joint of finite, non-zero
                               friction, return the associative answer alone */
@@ -56,6 +61,18 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * 12 rings that no start had certified, and took more starts on two of
  * six smaller ones (doc/seqlp.md 12, 14). */
 #define BL_SEQLP_NEAREST 3
+
+/* How far the path goes: until its products (over 1 + |alpha|) are at most
+ * BL_SEQLP_PATH_PRODUCTS with its residuals below 1e-6, or
+ * BL_SEQLP_PATH_STEPS Newton steps.  Closer is not always better: from the
+ * path at products 3.5e-2 the 2,525-block wall certified after 2 fixed LPs,
+ * from 6e-3 after 7, from a converged path after 2 (doc/seqlp.md 15). */
+#define BL_SEQLP_PATH_PRODUCTS 1e-3
+#define BL_SEQLP_PATH_STEPS 100
+/* By default the path starts the sequence up to this many rows: at 10,050
+ * blocks (30,150 rows) it stayed at products 0.4 for 100 steps (35 s), and
+ * the sequence from there did not certify in 112 LPs. */
+#define BL_SEQLP_PATH_ROWS 20000
 
 /* The pyramid the 3D sequence of LPs (and the direct solve) runs on: the
  * one asked for when it has an even number of facets (its section at n is

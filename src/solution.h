@@ -112,6 +112,10 @@ typedef struct bl_solution {
     int nstarts;
     bl_start *start;         /* each start of the sequence, owned */
     char note[256];          /* why a start ended without an answer, or "" */
+    int path_steps;          /* the path that started the sequence (napath.h): its
+                                Newton steps, 0 when start 0 began from the
+                                associative forces */
+    double path_alpha, path_products, path_seconds;
     /* the direct solve (method "mpec") */
     double alpha_start;      /* alpha of the point it started from (NAN: cold) */
     const char *nlp_status;  /* Ipopt's outcome in words, static */

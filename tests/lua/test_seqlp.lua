@@ -199,8 +199,8 @@ T.ok(#bad == 0, ("%d random walls at three mu: certified, verified, not above th
 do
   model { mu = 1.0 }
   wall { courses = walls.random(8), unit = { 0.4, 0.175 } }
-  local d = solve { flow = "nonassociative", starts = 0, lp = "ipm" }
-  local n = solve { flow = "nonassociative", starts = 0, lp = "ipm", nearest = 1 }
+  local d = solve { flow = "nonassociative", starts = 0, lp = "ipm", path = false }
+  local n = solve { flow = "nonassociative", starts = 0, lp = "ipm", nearest = 1, path = false }
   T.eq(d.starts[1].nearest, 0, "nearest forces: none by default where the third certificate passes")
   T.ok(n.starts[1].nearest >= 1 and n.starts[1].certificates >= 2,
        "nearest = 1: a nearest step after the first failed certificate",
@@ -266,20 +266,57 @@ do
 end
 
 -- The 4,935-block running-bond wall of the benchmark (70 blocks per
--- course), one start: its certificates fail three times, the nearest
--- forces follow, and the lowest alpha of the mechanism that certifies
--- passes the checks only with the cost on leaning (doc/seqlp.md 12).
--- Before both it was "certified" at the settled LP's alpha only.  The
--- answer must solve Eq. 12 (verified) below the associative alpha.
+-- course), one start from the associative forces: its certificates fail
+-- three times, the nearest forces follow, and the lowest alpha of the
+-- mechanism that certifies passes the checks only with the cost on leaning
+-- (doc/seqlp.md 12).  Before both it was "certified" at the settled LP's
+-- alpha only.  The answer must solve Eq. 12 (verified) below the
+-- associative alpha.
 do
   model { mu = 0.65 }
   wall { courses = walls.running_bond(70), unit = { 0.4, 0.175 } }
-  local r = solve { flow = "nonassociative", starts = 0, progress = false }
+  local r = solve { flow = "nonassociative", starts = 0, progress = false, path = false }
   T.ok(r.certified and r.verified and r.alpha < r.alpha_assoc,
        "4,935-block wall: certified and verified, below the associative alpha",
        ("%s %s %.6f vs %.6f"):format(r.status, tostring(r.verified), r.alpha, r.alpha_assoc))
   T.ok(r.starts[1].nearest >= 1, "4,935-block wall: the nearest forces followed failed certificates",
        ("%d certificates, %d nearest"):format(r.starts[1].certificates, r.starts[1].nearest))
+end
+
+-- The start from the path of the non-associative problem (napath.h), by
+-- default where the fixed LPs run on the interior point: random walls
+-- solved on it at three mu, and the 1,040-block wall of the benchmark.
+-- Every answer must solve Eq. 12 (certified and verified) not above the
+-- associative alpha (to 1e-7, the interior point's tolerance: at mu = 0.3
+-- walls 7 and 18 slide whole at alpha = mu, which both solves meet to
+-- 1e-9), and the same model must give the same answer again.  A path that
+-- stalls leaves the start to the associative forces (wall 11 at mu = 1:
+-- products 2e-2 from step 19 on); at least 12 of the 15 must start from
+-- the path (14 did when this was written).
+do
+  local all, bad, from_path = 0, {}, 0
+  for _, seed in ipairs { 1, 4, 7, 11, 18 } do
+    for _, mu in ipairs { 0.3, 0.65, 1.0 } do
+      model { mu = mu }
+      wall { courses = walls.random(seed), unit = { 0.4, 0.175 } }
+      local a = solve { flow = "nonassociative", starts = 0, lp = "ipm" }
+      local b = solve { flow = "nonassociative", starts = 0, lp = "ipm" }
+      all = all + 1
+      if a.path and a.path.steps > 0 then from_path = from_path + 1 end
+      if not (a.certified and a.verified and a.alpha <= a.alpha_assoc * (1 + 1e-7) and b.alpha == a.alpha) then
+        bad[#bad + 1] = ("%d/%g"):format(seed, mu)
+      end
+    end
+  end
+  T.ok(#bad == 0, ("%d random walls on the interior point: certified, verified, not above the "
+                   .. "associative alpha, the same twice"):format(all), table.concat(bad, " "))
+  T.ok(from_path >= 12, "random walls: at least 12 of 15 started from the path", ("%d"):format(from_path))
+  model { mu = 0.65 }
+  wall { courses = walls.running_bond(32), unit = { 0.4, 0.175 } }
+  local r = solve { flow = "nonassociative", starts = 0, progress = false }
+  T.ok(r.path and r.path.steps > 0 and r.certified and r.verified and r.alpha < r.alpha_assoc,
+       "1,040-block wall from the path: certified and verified, below the associative alpha",
+       ("%s %s %.6f vs %.6f"):format(r.status, tostring(r.verified), r.alpha, r.alpha_assoc))
 end
 
 T.done()

@@ -1,0 +1,46 @@
+/* napath.h - the path of the non-associative problem: an interior point on
+ * the complementarity conditions of the seed's Eq. 12 themselves (doc/theory.md
+ * §6.3), as a start for the sequence of LPs.
+ *
+ * Equilibrium with alpha free, Coulomb's cone |t| <= mu n at every contact
+ * point, the mechanism's normal motion complementary to n and its slip
+ * opposing t at the cone's edge, normalized by the live load's power: the
+ * associative LP's optimality conditions without the dilatancy term.  The
+ * products of the complementary pairs are driven to zero along a smoothed
+ * path from a point inside every bound, by Newton steps on a linear system
+ * that is not symmetric (UMFPACK).  The problem is not monotone, so the
+ * path need not reach a solution; its normal forces, part of the way
+ * there, start the sequence of LPs, which then certifies an answer in far
+ * fewer LPs than from the associative forces (doc/seqlp.md 15). */
+#ifndef BL_NAPATH_H
+#define BL_NAPATH_H
+
+#include "assemble.h"
+#include "error.h"
+
+typedef struct bl_napath_result {
+    int iterations;        /* Newton steps taken */
+    double alpha;          /* the path's alpha at the last one */
+    double complementarity; /* sum of the products over 1 + |alpha| */
+    double mu;             /* their mean */
+    double seconds;
+} bl_napath_result;
+
+/* Whether s (a BL_FRICTION_FIXED system) is one the path is made for: 2D,
+ * every contact point with finite, non-zero friction and no cohesion. */
+int bl_napath_applies(const bl_system *s);
+
+/* Follows the path on s until the complementarity (sum of the products
+ * over 1 + |alpha|) is at most target with the residuals below 1e-6, in at
+ * most max_iterations steps.  The last point in the terms of s's columns (ncols
+ * each): x (forces and alpha), zl and zu the multipliers of the bounds
+ * 0 <= n and -mu n <= t <= mu n, and y (nrows) the mechanism, with the sign
+ * of bl_lp_dual: the point of the fixed LP whose capacities are mu times
+ * these normal forces, near its own path (lp.h, bl_lp_warm).  Returns 0,
+ * 1 when the path did not get there (the cap, products not halved in 20
+ * steps, a step that is not finite, a factorization that failed: nothing
+ * is set), or -1 with err set (out of memory). */
+int bl_napath_run(const bl_system *s, double target, int max_iterations, int verbose, double *x,
+                  double *zl, double *zu, double *y, bl_napath_result *res, bl_error *err);
+
+#endif

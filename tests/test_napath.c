@@ -1,0 +1,167 @@
+/* The path of the non-associative problem (src/napath.h).
+ *
+ * Closed forms: followed to the end (products 1e-10), the path of a single
+ * block on the ground and of a column of three ends at the only solution of
+ * the seed's Eq. 12 there, alpha = min(mu, b / h) with h the height of
+ * what overturns (the whole column); to 1e-6.
+ *
+ * Its last point as a warm start (bl_lp_warm): the fixed LP of W4 whose
+ * capacities are mu times the path's normal forces, solved from the path's
+ * point, reaches the same optimum as from scratch (to 1e-7) in fewer
+ * interior-point iterations (counted, not timed). */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "assemble.h"
+#include "contact.h"
+#include "lp.h"
+#include "napath.h"
+
+static void box(bl_model *m, double x0, double y0, double b, double h, int support)
+{
+    bl_vec2 v[4] = {{x0, y0}, {x0 + b, y0}, {x0 + b, y0 + h}, {x0, y0 + h}};
+    assert_int_equal(bl_model_add_block(m, v, 4, support, 0, 0, NULL), 0);
+}
+
+/* A column of n blocks b x h on a wide support, friction mu. */
+static bl_system *column(int n, double b, double h, double mu)
+{
+    bl_model *m = bl_model_new();
+    m->mu = mu;
+    for (int k = 0; k < n; k++) box(m, 0.0, k * h, b, h, 0);
+    box(m, -1.0, -0.2, b + 2.0, 0.2, 1);
+    assert_int_equal(bl_contact_detect(m, NULL), 0);
+    bl_system *s = bl_system_build(m, BL_FRICTION_FIXED, NULL);
+    bl_model_free(m);
+    assert_non_null(s);
+    assert_true(bl_napath_applies(s));
+    return s;
+}
+
+/* The path to its end on s: its alpha, with x the forces if given. */
+static double path_alpha(const bl_system *s, double *x_out)
+{
+    double *x = calloc((size_t)s->ncols, sizeof *x), *zl = calloc((size_t)s->ncols, sizeof *zl);
+    double *zu = calloc((size_t)s->ncols, sizeof *zu), *y = calloc((size_t)s->nrows, sizeof *y);
+    bl_napath_result res;
+    assert_int_equal(bl_napath_run(s, 1e-10, 100, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_true(res.complementarity <= 1e-10);
+    if (x_out) memcpy(x_out, x, (size_t)s->ncols * sizeof *x);
+    free(x);
+    free(zl);
+    free(zu);
+    free(y);
+    return res.alpha;
+}
+
+static void single_block_slides(void **state)
+{
+    (void)state;
+    bl_system *s = column(1, 0.4, 0.175, 0.5); /* b / h = 2.29 > mu */
+    assert_true(fabs(path_alpha(s, NULL) - 0.5) <= 1e-6);
+    bl_system_free(s);
+}
+
+static void single_block_overturns(void **state)
+{
+    (void)state;
+    bl_system *s = column(1, 0.2, 1.0, 0.65); /* b / h = 0.2 < mu */
+    assert_true(fabs(path_alpha(s, NULL) - 0.2) <= 1e-6);
+    bl_system_free(s);
+}
+
+static void column_overturns_whole(void **state)
+{
+    (void)state;
+    bl_system *s = column(3, 0.2, 0.5, 0.65); /* b / H = 0.2 / 1.5 */
+    assert_true(fabs(path_alpha(s, NULL) - 0.2 / 1.5) <= 1e-6);
+    bl_system_free(s);
+}
+
+/* W4 (DESIGN.md 5), as in test_warm.c. */
+static void course(bl_model *m, const double *c, int n, int row)
+{
+    double x = 0;
+    for (int i = 0; i < n; i++) {
+        double len = fabs(c[i]);
+        if (c[i] > 0) box(m, x * 0.4, row * 0.175, len * 0.4, 0.175, 0);
+        x += len;
+    }
+}
+
+static bl_system *w4(void)
+{
+    bl_model *m = bl_model_new();
+    const double E[] = {.5, 1, 1, 1, 1, .5}, U[] = {1, 1, 1, 1, 1}, Wu[] = {1, -1, 1, -1, 1},
+                 We[] = {.5, .5, -1, .5, .5, -1, .5, .5};
+    const double *cs[] = {E, U, E, Wu, We, Wu, We, Wu, E, U, E};
+    const int ns[] = {6, 5, 6, 5, 8, 5, 8, 5, 6, 5, 6};
+    for (int r = 0; r < 11; r++) course(m, cs[r], ns[r], r);
+    box(m, 0, -0.175, 2, 0.175, 1);
+    assert_int_equal(bl_contact_detect(m, NULL), 0);
+    bl_system *s = bl_system_build(m, BL_FRICTION_FIXED, NULL);
+    bl_model_free(m);
+    assert_non_null(s);
+    return s;
+}
+
+static void warm_from_the_path(void **state)
+{
+    (void)state;
+    bl_system *s = w4();
+    assert_true(bl_napath_applies(s));
+    size_t nc = (size_t)s->ncols;
+    double *x = calloc(nc, sizeof *x), *zl = calloc(nc, sizeof *zl), *zu = calloc(nc, sizeof *zu);
+    double *y = calloc((size_t)s->nrows, sizeof *y), *n = calloc((size_t)s->npoints, sizeof *n);
+    double *lo = calloc(nc, sizeof *lo), *hi = calloc(nc, sizeof *hi);
+    bl_napath_result res;
+    assert_int_equal(bl_napath_run(s, 1e-3, 100, 0, x, zl, zu, y, &res, NULL), 0);
+    for (size_t k = 0; k < (size_t)s->nforce; k++)
+        if (s->col_kind[k] == BL_COL_NORMAL) n[s->col_point[k]] = x[k];
+    bl_system_fixed_bounds(s, n, s->cohesion, lo, hi);
+    bl_lp_settings set;
+    bl_lp_settings_default(&set);
+    set.engine = BL_LP_IPM;
+    bl_lp_problem p = {s->nrows, s->ncols, s->colptr, s->rowind, s->val, lo, hi, s->rhs, s->obj};
+    bl_lp *cold = bl_lp_create(&p, &set, NULL), *warm = bl_lp_create(&p, &set, NULL);
+    assert_non_null(cold);
+    assert_non_null(warm);
+    assert_int_equal(bl_lp_warm(warm, x, zl, zu, y, res.mu), 0);
+    assert_int_equal(bl_lp_solve(cold), BL_LP_OPTIMAL);
+    assert_int_equal(bl_lp_solve(warm), BL_LP_OPTIMAL);
+    double ac = bl_lp_primal(cold)[s->nforce], aw = bl_lp_primal(warm)[s->nforce];
+    print_message("# W4's fixed LP from the path (products %.1e, %d steps): %d iterations against "
+                  "%d cold; alpha %.10f against %.10f\n",
+                  res.complementarity, res.iterations, bl_lp_iterations(warm), bl_lp_iterations(cold),
+                  aw, ac);
+    assert_true(fabs(aw - ac) <= 1e-7 * fabs(ac));
+    assert_true(bl_lp_iterations(warm) < bl_lp_iterations(cold));
+    bl_lp_free(cold);
+    bl_lp_free(warm);
+    free(x);
+    free(zl);
+    free(zu);
+    free(y);
+    free(n);
+    free(lo);
+    free(hi);
+    bl_system_free(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(single_block_slides),
+        cmocka_unit_test(single_block_overturns),
+        cmocka_unit_test(column_overturns_whole),
+        cmocka_unit_test(warm_from_the_path),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
