@@ -791,7 +791,6 @@ static void rigid_answer(run *r, rigid_lp *j, bl_solution *s)
     j->system = NULL;
 }
 
-
 static void *run_path(void *arg)
 {
     path_job *j = arg;
@@ -831,8 +830,8 @@ static int path_start(bl_model *m, const bl_seqlp_options *o, path_job *j, bl_er
         path_free(j);
         return 0;
     }
-    size_t nc = (size_t)j->system->ncols, nr = (size_t)j->system->nrows;
-    if (bl_napath_applies(j->system)) {
+    size_t nc = (size_t)f->ncols, nr = (size_t)f->nrows;
+    if (bl_napath_applies(f)) {
         j->x = malloc(nc * sizeof *j->x);
         j->zl = malloc(nc * sizeof *j->zl);
         j->zu = malloc(nc * sizeof *j->zu);
