@@ -46,4 +46,29 @@ function walls.running_bond(n)
   return courses
 end
 
+-- A running-bond wall of n x n blocks with windows 3 blocks wide and 4
+-- courses high, every 8 blocks along courses 8-11 and 18-21, no lintels:
+-- the blocks over a window hang on head-joint friction (DESIGN 2.4).
+function walls.windows(n)
+  local courses = {}
+  for c = 1, n do
+    local cuts, seen, wins = {}, {}, {}
+    local function cut(x) if not seen[x] then seen[x] = true; cuts[#cuts + 1] = x end end
+    cut(0); cut(n)
+    for x = c % 2 == 1 and 0.5 or 1, n - 0.5, 1 do cut(x) end
+    if (c >= 8 and c <= 11) or (c >= 18 and c <= 21) then
+      for w = 3, n - 4, 8 do wins[#wins + 1] = w; cut(w); cut(w + 3) end
+    end
+    table.sort(cuts)
+    local r = {}
+    for i = 1, #cuts - 1 do
+      local a, b, gap = cuts[i], cuts[i + 1], false
+      for _, w in ipairs(wins) do gap = gap or (a >= w and b <= w + 3) end
+      r[#r + 1] = gap and -(b - a) or (b - a)
+    end
+    courses[c] = r
+  end
+  return courses
+end
+
 return walls
