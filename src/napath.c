@@ -476,8 +476,8 @@ int bl_napath_run(const bl_system *s, double target, int max_iterations, int ver
             ret = 0;
             break;
         }
-        /* stalled: the products not halved in STALL steps (a random wall of
-         * the tests at mu = 1 stayed at 2e-2 from step 19 to 100) */
+        /* stalled: the products not halved in STALL steps (random wall 11
+         * of the tests at mu = 1 stays at 2e-2 from step 11 on) */
         if (res->complementarity < 0.5 * best) {
             best = res->complementarity;
             best_it = it;
