@@ -47,7 +47,8 @@ function walls.running_bond(n)
 end
 
 -- A running-bond wall of n x n blocks with windows 3 blocks wide and 4
--- courses high, every 8 blocks along courses 8-11 and 18-21, no lintels:
+-- courses high, every 8 blocks from the fourth along courses 8-11 and
+-- 18-21 (six at n = 30), no lintels:
 -- the blocks over a window hang on head-joint friction (DESIGN 2.4).
 function walls.windows(n)
   local courses = {}
