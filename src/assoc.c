@@ -93,10 +93,10 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
             /* Blocks confined between supports can carry any compression,
              * and the interior point does not converge on the unbounded
              * optimal face (doc/seqlp.md 13).  Every force column capped
-             * far above any force equilibrium needs (10 W0 per row, some
-             * 30 times the model's weight) bounds it without a cost that
-             * would tilt the mechanism, which the verification checks. */
-            double cap = 10.0 * sys->nrows;
+             * far above any force equilibrium needs (BL_LP_CONFINED)
+             * bounds it without a cost that would tilt the mechanism,
+             * which the verification checks. */
+            double cap = BL_LP_CONFINED * sys->nrows;
             for (int j = 0; j < sys->nforce; j++)
                 if (isinf(sys->hi[j])) sys->hi[j] = cap;
             lost += bl_lp_iterations(lp);

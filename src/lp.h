@@ -44,6 +44,13 @@ bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows, int ncols);
  * one core. */
 int bl_lp_leaves_core(bl_lp_engine_kind asked, int threads, int nrows, int ncols);
 
+/* Forces beyond this many per equality row, in units of the block weights
+ * (W0), are taken as the self-stress of blocks confined between supports,
+ * which no equilibrium needs (some 30 times a model's weight): the
+ * associative solve caps its forces there (assoc.c), and the interior
+ * point's stall test reads larger ones as an unbounded optimal face. */
+#define BL_LP_CONFINED 10.0
+
 typedef struct bl_lp_settings {
     bl_lp_engine_kind engine;
     int verbose;         /* 0: the engine prints nothing */

@@ -29,9 +29,6 @@
  * MAX_THREADS) from BL_IPM_PAR_COLS columns (lp_engine.h); CHOLMOD's
  * factorization and solves stay on one (doc/performance.md, "Threads"). */
 #define MAX_THREADS 4
-/* Forces beyond this many per row (in the units of A: block weights) are
- * confined self-stress, as the associative solve's cap takes them (assoc.c). */
-#define CONFINED 10.0
 #define PAR_FOR _Pragma("omp parallel for num_threads(p->threads) if (n >= BL_IPM_PAR_COLS) schedule(static)")
 #define PAR_FOR_WITH(clauses) \
     _Pragma(STR(omp parallel for num_threads(p->threads) if (n >= BL_IPM_PAR_COLS) schedule(static) clauses))
@@ -722,8 +719,8 @@ static bl_lp_status solve(void *e)
             /* ... unless what keeps the objectives apart is the primal
              * residual's round-off times the multipliers, with the
              * products themselves within the tolerance and the forces
-             * bounded (at most CONFINED per row in units of the block
-             * weights; those of confined blocks grew past 1e7 with the
+             * bounded (at most BL_LP_CONFINED per row, lp.h; those of
+             * confined blocks grew past 1e7 with the
              * products at 7e-9): then the point is optimal to the
              * tolerance (a 900-block wall with windows at mu = 0.5: the
              * primal residual stayed at 1.6e-10, y . rp made the gap
@@ -731,7 +728,7 @@ static bl_lp_status solve(void *e)
              * answers are verified as any other) */
             double yr = dot(p->y, p->rp, m);
             status = gap_c <= tol * (1.0 + fabs(pobj)) && fabs(yr) >= 0.5 * fabs(pobj - dobj) &&
-                             inf_norm(p->x, n) <= CONFINED * m
+                             inf_norm(p->x, n) <= BL_LP_CONFINED * m
                          ? BL_LP_OPTIMAL
                          : BL_LP_FAILED;
             break;

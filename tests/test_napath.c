@@ -23,6 +23,7 @@
 #include "contact.h"
 #include "lp.h"
 #include "napath.h"
+#include "w4.h"
 
 static void box(bl_model *m, double x0, double y0, double b, double h, int support)
 {
@@ -85,37 +86,10 @@ static void column_overturns_whole(void **state)
     bl_system_free(s);
 }
 
-/* W4 (DESIGN.md 5), as in test_warm.c. */
-static void course(bl_model *m, const double *c, int n, int row)
-{
-    double x = 0;
-    for (int i = 0; i < n; i++) {
-        double len = fabs(c[i]);
-        if (c[i] > 0) box(m, x * 0.4, row * 0.175, len * 0.4, 0.175, 0);
-        x += len;
-    }
-}
-
-static bl_system *w4(void)
-{
-    bl_model *m = bl_model_new();
-    const double E[] = {.5, 1, 1, 1, 1, .5}, U[] = {1, 1, 1, 1, 1}, Wu[] = {1, -1, 1, -1, 1},
-                 We[] = {.5, .5, -1, .5, .5, -1, .5, .5};
-    const double *cs[] = {E, U, E, Wu, We, Wu, We, Wu, E, U, E};
-    const int ns[] = {6, 5, 6, 5, 8, 5, 8, 5, 6, 5, 6};
-    for (int r = 0; r < 11; r++) course(m, cs[r], ns[r], r);
-    box(m, 0, -0.175, 2, 0.175, 1);
-    assert_int_equal(bl_contact_detect(m, NULL), 0);
-    bl_system *s = bl_system_build(m, BL_FRICTION_FIXED, NULL);
-    bl_model_free(m);
-    assert_non_null(s);
-    return s;
-}
-
 static void warm_from_the_path(void **state)
 {
     (void)state;
-    bl_system *s = w4();
+    bl_system *s = w4(BL_FRICTION_FIXED);
     assert_true(bl_napath_applies(s));
     size_t nc = (size_t)s->ncols;
     double *x = calloc(nc, sizeof *x), *zl = calloc(nc, sizeof *zl), *zu = calloc(nc, sizeof *zu);

@@ -24,37 +24,7 @@
 #include "assemble.h"
 #include "contact.h"
 #include "lp.h"
-
-static void course(bl_model *m, const double *c, int n, int row)
-{
-    double x = 0, L = 0.4, H = 0.175;
-    for (int i = 0; i < n; i++) {
-        double len = fabs(c[i]);
-        if (c[i] > 0) {
-            bl_vec2 v[4] = {{x * L, row * H}, {(x + len) * L, row * H},
-                            {(x + len) * L, (row + 1) * H}, {x * L, (row + 1) * H}};
-            assert_int_equal(bl_model_add_block(m, v, 4, 0, 0, 0, NULL), 0);
-        }
-        x += len;
-    }
-}
-
-static bl_system *w4(void)
-{
-    bl_model *m = bl_model_new();
-    const double E[] = {.5, 1, 1, 1, 1, .5}, U[] = {1, 1, 1, 1, 1}, Wu[] = {1, -1, 1, -1, 1},
-                 We[] = {.5, .5, -1, .5, .5, -1, .5, .5};
-    const double *cs[] = {E, U, E, Wu, We, Wu, We, Wu, E, U, E};
-    const int ns[] = {6, 5, 6, 5, 8, 5, 8, 5, 6, 5, 6};
-    for (int r = 0; r < 11; r++) course(m, cs[r], ns[r], r);
-    bl_vec2 b[4] = {{0, -0.175}, {2, -0.175}, {2, 0}, {0, 0}};
-    assert_int_equal(bl_model_add_block(m, b, 4, 1, 0, 0, NULL), 0);
-    assert_int_equal(bl_contact_detect(m, NULL), 0);
-    bl_system *s = bl_system_build(m, BL_FRICTION_CONE, NULL);
-    bl_model_free(m);
-    assert_non_null(s);
-    return s;
-}
+#include "w4.h"
 
 static bl_lp *make(const bl_system *s, const double *lo, bl_lp_engine_kind engine)
 {
@@ -70,7 +40,7 @@ static bl_lp *make(const bl_system *s, const double *lo, bl_lp_engine_kind engin
 
 static void warm_vs_cold(bl_lp_engine_kind engine)
 {
-    bl_system *s = w4();
+    bl_system *s = w4(BL_FRICTION_CONE);
     /* the changed LP: every force column carries at least 1e-3 W0 */
     double *lo2 = malloc((size_t)s->ncols * sizeof *lo2);
     memcpy(lo2, s->lo, (size_t)s->ncols * sizeof *lo2);
@@ -135,7 +105,7 @@ static bl_lp *held(const bl_system *s, double a, int early, bl_lp_status *st)
 static void early_ray(void **state)
 {
     (void)state;
-    bl_system *s = w4();
+    bl_system *s = w4(BL_FRICTION_CONE);
     bl_lp_status st;
     /* an equilibrium at 0.3, below the associative alpha */
     bl_lp *ok = held(s, 0.3, 1, &st);
@@ -191,7 +161,7 @@ static void floor_bounds(const bl_system *s, double lo, double *out)
 static void rewind_solve(void **state)
 {
     (void)state;
-    bl_system *s = w4();
+    bl_system *s = w4(BL_FRICTION_CONE);
     double *b = malloc((size_t)s->ncols * sizeof *b), *c = malloc((size_t)s->ncols * sizeof *c);
     floor_bounds(s, 5e-3, b); /* the solve taken back */
     floor_bounds(s, 1e-3, c); /* the one after it */
