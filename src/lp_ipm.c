@@ -643,6 +643,8 @@ static bl_lp_status solve(void *e)
     int stall_it = 0;
     double stall_ep = INFINITY; /* the last real fall of the primal residual */
     int stall_ep_it = 0;
+    double low_ep = INFINITY, low_mu = INFINITY; /* the lowest primal residual yet, mu then */
+    int low_ep_it = 0;
     int ray_run = 0; /* iterations in a row that passed ray_test */
     int foreign = p->k.foreign; /* the start is another problem's point */
     p->k.foreign = 0;
@@ -743,6 +745,20 @@ static bl_lp_status solve(void *e)
             stall_ep = eg <= tol && ed <= tol && eu <= tol ? ep : INFINITY;
             stall_ep_it = it;
         } else if (it - stall_ep_it >= 15) {
+            status = BL_LP_FAILED;
+            break;
+        }
+        /* Products gone, primal residual left: the residual not halving
+         * for 30 iterations while mu fell a millionfold.  The iterate is
+         * then pinned to the boundary and cannot remove the residual; an
+         * LP with alpha fixed at a settled value (a certificate of the
+         * sequence on a 4,258-block wall) reached 4e-3 at iteration 32,
+         * then stayed at 0.2-0.8 with mu at 1e-10 until the limit of 200. */
+        if (ep < 0.5 * low_ep) {
+            low_ep = ep;
+            low_mu = mu;
+            low_ep_it = it;
+        } else if (ep > tol && it - low_ep_it >= 30 && mu < 1e-6 * low_mu) {
             status = BL_LP_FAILED;
             break;
         }

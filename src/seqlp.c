@@ -186,12 +186,16 @@ static bl_lp_status certificate_lp(run *r, const bl_solve_options *asked, double
     }
     bl_lp_status st = bl_lp_solve(r->lp_cone);
     if (fixed && (st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) &&
-        strcmp(bl_lp_engine(r->lp_cone), "ipm") == 0) {
+        strcmp(bl_lp_engine(r->lp_cone), "ipm") == 0 &&
+        bl_lp_choose(BL_LP_AUTO, c->nrows, c->ncols) == BL_LP_SIMPLEX) {
         /* At the settled alpha the certificate's feasible set can be a
          * single point, which an interior point approaches without
-         * converging (met on a stack-bond wall): the simplex decides it.
-         * With alpha free the certificate at the settled alpha comes
-         * next instead (the simplex took minutes on large 3D models). */
+         * converging (met on a stack-bond wall): the simplex decides it,
+         * on models small enough for it to be quick.  With alpha free
+         * the certificate at the settled alpha comes next instead; on
+         * larger models the simplex took minutes (3D models; 68,119
+         * iterations on a 4,258-block wall, doc/seqlp.md 12), and the
+         * certificate counts as failed (certify). */
         bl_solve_options so = *o;
         so.lp = BL_LP_SIMPLEX;
         bl_lp_free(r->lp_cone);
@@ -334,6 +338,9 @@ static bl_lp_status certify(run *r, double alpha, const double *y, const bl_seql
         if (sf == BL_LP_FAILED && !r->lp_cone) return sf;
         if (k == 2 || (sf == BL_LP_OPTIMAL && ok)) st = sf;
     }
+    /* a certificate the interior point cannot finish decides nothing:
+     * it counts as failed, and the sequence goes on */
+    if ((st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) && r->lp_cone) return BL_LP_INFEASIBLE;
     if (st != BL_LP_OPTIMAL) return st;
     memcpy(r->xc, bl_lp_primal(r->lp_cone), (size_t)r->cone->ncols * sizeof *r->xc);
     if (ok && *cert != alpha) return st;

@@ -283,6 +283,26 @@ do
        ("%d certificates, %d nearest"):format(r.starts[1].certificates, r.starts[1].nearest))
 end
 
+-- The 4,258-block running-bond wall (65 blocks per course), one start
+-- from the associative forces: the certificate at the settled alpha of LP
+-- 35 has no answer, and the interior point cannot finish it (its primal
+-- residual stays at 0.2-0.8 while mu falls to 1e-10).  That LP used to go
+-- to the simplex, which took 68,119 iterations to find it infeasible
+-- (89,369 in the whole solve, 290 s); now such a certificate counts as
+-- failed after 65 interior-point iterations, and the sequence goes on to
+-- the same answer, 0.424028, in 1,074 (doc/seqlp.md 12).  The answer must
+-- solve Eq. 12 below the associative alpha, in at most 5,000 iterations
+-- of either engine (a bound far below the simplex's count alone).
+do
+  model { mu = 0.65 }
+  wall { courses = walls.running_bond(65), unit = { 0.4, 0.175 } }
+  local r = solve { flow = "nonassociative", starts = 0, progress = false, path = false }
+  T.ok(r.certified and r.verified and r.alpha < r.alpha_assoc and r.iterations <= 5000,
+       "4,258-block wall: certified and verified below the associative alpha in at most 5,000 iterations",
+       ("%s %s %.6f vs %.6f, %d iterations"):format(r.status, tostring(r.verified), r.alpha, r.alpha_assoc,
+                                                   r.iterations))
+end
+
 -- The start from the path of the non-associative problem (napath.h), by
 -- default where the fixed LPs run on the interior point: random walls
 -- solved on it at three mu, and the 1,040-block wall of the benchmark.
