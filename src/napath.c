@@ -420,8 +420,8 @@ static int start(path *p, point *x, work *w)
     return 0;
 }
 
-int bl_napath_run(const bl_system *s, double target, int max_iterations, int verbose, double *xo,
-                  double *zl, double *zu, double *yo, bl_napath_result *res, bl_error *err)
+int bl_napath_run(const bl_system *s, double target, double near, int max_iterations, int verbose,
+                  double *xo, double *zl, double *zu, double *yo, bl_napath_result *res, bl_error *err)
 {
     double t0 = bl_clock();
     memset(res, 0, sizeof *res);
@@ -476,13 +476,16 @@ int bl_napath_run(const bl_system *s, double target, int max_iterations, int ver
             ret = 0;
             break;
         }
-        /* stalled: the products not halved in STALL steps (random wall 11
-         * of the tests at mu = 1 stays at 2e-2 from step 11 on) */
+        /* stalled (the products not halved in STALL steps: random wall 11
+         * of the tests at mu = 1 stays at 2e-2 from step 11 on) or at the
+         * last step: taken when near enough */
         if (res->complementarity < 0.5 * best) {
             best = res->complementarity;
             best_it = it;
-        } else if (it - best_it >= STALL) {
-            goto done;
+        }
+        if (it - best_it >= STALL || it == max_iterations - 1) {
+            if (ep <= 1e-6 && ed <= 1e-6 && res->complementarity <= near) ret = 0;
+            break;
         }
         /* the blocks of K^-1 and the factor */
         for (int q = 0; q < P; q++) {

@@ -32,15 +32,17 @@ int bl_napath_applies(const bl_system *s);
 
 /* Follows the path on s until the complementarity (sum of the products
  * over 1 + |alpha|) is at most target with the residuals below 1e-6, in at
- * most max_iterations steps.  The last point in the terms of s's columns (ncols
+ * most max_iterations steps; a path that stalls (products not halved in 20
+ * steps) or reaches its last step is still taken when its complementarity
+ * is at most near (>= target).  The last point in the terms of s's columns (ncols
  * each): x (forces and alpha), zl and zu the multipliers of the bounds
  * 0 <= n and -mu n <= t <= mu n, and y (nrows) the mechanism, with the sign
  * of bl_lp_dual: the point of the fixed LP whose capacities are mu times
  * these normal forces, near its own path (lp.h, bl_lp_warm).  Returns 0,
- * 1 when the path did not get there (the cap, products not halved in 20
- * steps, a step that is not finite, a factorization that failed: nothing
+ * 1 when the path did not get there (stalled or at the cap farther than
+ * near, a step that is not finite, a factorization that failed: nothing
  * is set), or -1 with err set (out of memory). */
-int bl_napath_run(const bl_system *s, double target, int max_iterations, int verbose, double *x,
-                  double *zl, double *zu, double *y, bl_napath_result *res, bl_error *err);
+int bl_napath_run(const bl_system *s, double target, double near, int max_iterations, int verbose,
+                  double *x, double *zl, double *zu, double *y, bl_napath_result *res, bl_error *err);
 
 #endif

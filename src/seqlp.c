@@ -801,8 +801,9 @@ static void rigid_answer(run *r, rigid_lp *j, bl_solution *s)
 static void *run_path(void *arg)
 {
     path_job *j = arg;
-    j->status = bl_napath_run(j->system, BL_SEQLP_PATH_PRODUCTS, BL_SEQLP_PATH_STEPS, j->verbose,
-                              j->x, j->zl, j->zu, j->y, &j->res, &j->err);
+    j->status = bl_napath_run(j->system, BL_SEQLP_PATH_PRODUCTS, BL_SEQLP_PATH_NEAR,
+                              BL_SEQLP_PATH_STEPS, j->verbose, j->x, j->zl, j->zu, j->y, &j->res,
+                              &j->err);
     return NULL;
 }
 

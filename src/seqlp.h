@@ -69,6 +69,12 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * from 6e-3 after 7, from a converged path after 2 (doc/seqlp.md 15). */
 #define BL_SEQLP_PATH_PRODUCTS 1e-3
 #define BL_SEQLP_PATH_STEPS 100
+/* A path that stalls (or reaches its last step) this near is taken all the
+ * same: from 55 to 80 courses of running bond it stalled at 1.7e-3 to
+ * 2.4e-3 on three walls of seven, whose sequences then took 7-13 LPs
+ * instead of 36-48; taken at 9.4e-3 (68 courses), 59 instead of 55
+ * (doc/seqlp.md 15). */
+#define BL_SEQLP_PATH_NEAR 3e-3
 /* By default the path starts the sequence up to this many rows: at 10,050
  * blocks (30,150 rows) it stayed at products 0.4 for 100 steps (35 s), and
  * the sequence from there did not certify in 112 LPs. */

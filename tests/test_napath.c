@@ -8,7 +8,13 @@
  * Its last point as a warm start (bl_lp_warm): the fixed LP of W4 whose
  * capacities are mu times the path's normal forces, solved from the path's
  * point, reaches the same optimum as from scratch (to 1e-7) in fewer
- * interior-point iterations (counted, not timed). */
+ * interior-point iterations (counted, not timed).
+ *
+ * A path cut short (W4, 12 steps towards 1e-12) is taken exactly when its
+ * products are at most the given "near": its point then is the one whose
+ * products were measured (recomputed here from the returned forces and
+ * multipliers, to 1e-9) and in equilibrium (residual below 1e-6 of the
+ * loads). */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -52,7 +58,7 @@ static double path_alpha(const bl_system *s, double *x_out)
     double *x = calloc((size_t)s->ncols, sizeof *x), *zl = calloc((size_t)s->ncols, sizeof *zl);
     double *zu = calloc((size_t)s->ncols, sizeof *zu), *y = calloc((size_t)s->nrows, sizeof *y);
     bl_napath_result res;
-    assert_int_equal(bl_napath_run(s, 1e-10, 100, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-10, 1e-10, 100, 0, x, zl, zu, y, &res, NULL), 0);
     assert_true(res.complementarity <= 1e-10);
     if (x_out) memcpy(x_out, x, (size_t)s->ncols * sizeof *x);
     free(x);
@@ -96,7 +102,7 @@ static void warm_from_the_path(void **state)
     double *y = calloc((size_t)s->nrows, sizeof *y), *n = calloc((size_t)s->npoints, sizeof *n);
     double *lo = calloc(nc, sizeof *lo), *hi = calloc(nc, sizeof *hi);
     bl_napath_result res;
-    assert_int_equal(bl_napath_run(s, 1e-3, 100, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 100, 0, x, zl, zu, y, &res, NULL), 0);
     for (size_t k = 0; k < (size_t)s->nforce; k++)
         if (s->col_kind[k] == BL_COL_NORMAL) n[s->col_point[k]] = x[k];
     bl_system_fixed_bounds(s, n, s->cohesion, lo, hi);
@@ -129,6 +135,58 @@ static void warm_from_the_path(void **state)
     bl_system_free(s);
 }
 
+/* sum over the points of n z + s1 w1 + s2 w2, over 1 + |alpha|, from the
+ * returned columns (x = n with z in zl; x = t = mu u with w2 / mu in zl and
+ * w1 / mu in zu) */
+static double products_of(const bl_system *s, const double *x, const double *zl, const double *zu)
+{
+    double *n = calloc((size_t)s->npoints, sizeof *n), sum = 0.0;
+    for (int k = 0; k < s->nforce; k++)
+        if (s->col_kind[k] == BL_COL_NORMAL) n[s->col_point[k]] = x[k];
+    for (int k = 0; k < s->nforce; k++) {
+        int p = s->col_point[k];
+        if (s->col_kind[k] == BL_COL_NORMAL) sum += x[k] * zl[k];
+        else sum += (s->mu[p] * n[p] + x[k]) * zl[k] + (s->mu[p] * n[p] - x[k]) * zu[k];
+    }
+    free(n);
+    return sum / (1.0 + fabs(x[s->nforce]));
+}
+
+static void cut_short_taken_when_near(void **state)
+{
+    (void)state;
+    bl_system *s = w4(BL_FRICTION_FIXED);
+    size_t nc = (size_t)s->ncols;
+    double *x = calloc(nc, sizeof *x), *zl = calloc(nc, sizeof *zl), *zu = calloc(nc, sizeof *zu);
+    double *y = calloc((size_t)s->nrows, sizeof *y), *r = calloc((size_t)s->nrows, sizeof *r);
+    bl_napath_result res;
+    assert_int_equal(bl_napath_run(s, 1e-12, 1e-12, 12, 0, x, zl, zu, y, &res, NULL), 1);
+    double reached = res.complementarity;
+    assert_true(reached > 1e-12);
+    assert_int_equal(bl_napath_run(s, 1e-12, 0.5 * reached, 12, 0, x, zl, zu, y, &res, NULL), 1);
+    assert_int_equal(bl_napath_run(s, 1e-12, 2.0 * reached, 12, 0, x, zl, zu, y, &res, NULL), 0);
+    double own = products_of(s, x, zl, zu), bmax = 0.0, rmax = 0.0;
+    for (int i = 0; i < s->nrows; i++) {
+        r[i] = s->rhs[i];
+        bmax = fmax(bmax, fabs(s->rhs[i]));
+    }
+    for (int k = 0; k < s->ncols; k++)
+        for (int q = s->colptr[k]; q < s->colptr[k + 1]; q++) r[s->rowind[q]] -= s->val[q] * x[k];
+    for (int i = 0; i < s->nrows; i++) rmax = fmax(rmax, fabs(r[i]));
+    print_message("# W4's path cut at 12 steps: products %.3e (recomputed %.3e), equilibrium "
+                  "residual %.1e of %.1e\n",
+                  res.complementarity, own, rmax, bmax);
+    assert_true(fabs(own - res.complementarity) <= 1e-9 * res.complementarity);
+    assert_true(own <= 2.0 * reached);
+    assert_true(rmax <= 1e-6 * bmax);
+    free(x);
+    free(zl);
+    free(zu);
+    free(y);
+    free(r);
+    bl_system_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -136,6 +194,7 @@ int main(void)
         cmocka_unit_test(single_block_overturns),
         cmocka_unit_test(column_overturns_whole),
         cmocka_unit_test(warm_from_the_path),
+        cmocka_unit_test(cut_short_taken_when_near),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
