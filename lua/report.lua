@@ -27,9 +27,14 @@ function Result.__tostring(r)
     say("  associative alpha = %.6g%s; %d LPs in the sequence%s", r.alpha_assoc,
         r.certified and "" or " (an upper bound on the non-associative one)", r.lps,
         r.certified and not r.interrupted and ", the last one its certificate" or "")
-    if r.path then
+    if r.path and r.path.taken then
       say("  the first start from the path of the non-associative problem: %d Newton steps,", r.path.steps)
       say("  alpha %.6g, products %s, %.3f s", r.path.alpha, g(r.path.products), r.path.time)
+    elseif r.path then
+      say("  the path of the non-associative problem stopped short: products %s after %d Newton",
+          g(r.path.products), r.path.steps)
+      say("  steps (alpha %.6g, %.3f s); the first start began from the associative forces",
+          r.path.alpha, r.path.time)
     end
     local tried, near = 0, 0
     for _, st in ipairs(r.starts) do tried, near = tried + st.certificates, near + st.nearest end

@@ -857,7 +857,8 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         set_integer(L, "lps", s->lps);
         set_number(L, "slip", s->slip);
         if (s->path_steps > 0) {
-            lua_createtable(L, 0, 4);
+            lua_createtable(L, 0, 5);
+            set_boolean(L, "taken", s->path_taken);
             set_integer(L, "steps", s->path_steps);
             set_number(L, "alpha", s->path_alpha);
             set_number(L, "products", s->path_products);

@@ -856,9 +856,9 @@ static int path_start(bl_model *m, const bl_seqlp_options *o, path_job *j, bl_er
     return 0;
 }
 
-/* Waits for the path; when it went well, its normal forces in r->n, its
- * point as the first fixed LP's start (r->warm) and its record in s.  -1
- * with err set when it ran out of memory. */
+/* Waits for the path and records it in s; when it went well, its normal
+ * forces in r->n and its point as the first fixed LP's start (r->warm).
+ * -1 with err set when it ran out of memory. */
 static int path_answer(path_job *j, run *r, bl_solution *s, bl_error *err)
 {
     if (!j->system) return 0;
@@ -866,15 +866,16 @@ static int path_answer(path_job *j, run *r, bl_solution *s, bl_error *err)
     j->beside = 0;
     if (j->status < 0) return bl_error_set(err, "%s", j->err.msg);
     const bl_system *f = j->system;
+    s->path_steps = j->res.iterations;
+    s->path_alpha = j->res.alpha;
+    s->path_products = j->res.complementarity;
+    s->path_seconds = j->res.seconds;
     if (j->status != 0 || f->ncols != r->fixed->ncols || f->nrows != r->fixed->nrows) return 0;
     for (int p = 0; p < f->npoints; p++) r->n[p] = 0.0;
     for (int k = 0; k < f->nforce; k++)
         if (f->col_kind[k] == BL_COL_NORMAL) r->n[f->col_point[k]] = j->x[k];
     r->warm = j;
-    s->path_steps = j->res.iterations;
-    s->path_alpha = j->res.alpha;
-    s->path_products = j->res.complementarity;
-    s->path_seconds = j->res.seconds;
+    s->path_taken = 1;
     return 0;
 }
 

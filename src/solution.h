@@ -112,9 +112,10 @@ typedef struct bl_solution {
     int nstarts;
     bl_start *start;         /* each start of the sequence, owned */
     char note[256];          /* why a start ended without an answer, or "" */
-    int path_steps;          /* the path that started the sequence (napath.h): its
-                                Newton steps, 0 when start 0 began from the
-                                associative forces */
+    int path_steps;          /* the path of the non-associative problem (napath.h):
+                                its Newton steps, 0 when none ran */
+    int path_taken;          /* whether it started the sequence (else start 0
+                                began from the associative forces) */
     double path_alpha, path_products, path_seconds;
     /* the direct solve (method "mpec") */
     double alpha_start;      /* alpha of the point it started from (NAN: cold) */

@@ -322,7 +322,11 @@ do
       local a = solve { flow = "nonassociative", starts = 0, lp = "ipm" }
       local b = solve { flow = "nonassociative", starts = 0, lp = "ipm" }
       all = all + 1
-      if a.path and a.path.steps > 0 then from_path = from_path + 1 end
+      if a.path and a.path.taken then from_path = from_path + 1 end
+      -- a path is taken exactly when it ended within 3e-3 (BL_SEQLP_PATH_NEAR)
+      if a.path and a.path.taken ~= (a.path.products <= 3e-3) then
+        bad[#bad + 1] = ("%d/%g path %s at %.2e"):format(seed, mu, tostring(a.path.taken), a.path.products)
+      end
       if not (a.certified and a.verified and a.alpha <= a.alpha_assoc * (1 + 1e-7) and b.alpha == a.alpha) then
         bad[#bad + 1] = ("%d/%g"):format(seed, mu)
       end
@@ -334,7 +338,7 @@ do
   model { mu = 0.65 }
   wall { courses = walls.running_bond(32), unit = { 0.4, 0.175 } }
   local r = solve { flow = "nonassociative", starts = 0, progress = false }
-  T.ok(r.path and r.path.steps > 0 and r.certified and r.verified and r.alpha < r.alpha_assoc,
+  T.ok(r.path and r.path.taken and r.path.steps > 0 and r.certified and r.verified and r.alpha < r.alpha_assoc,
        "1,040-block wall from the path: certified and verified, below the associative alpha",
        ("%s %s %.6f vs %.6f"):format(r.status, tostring(r.verified), r.alpha, r.alpha_assoc))
 end
