@@ -52,10 +52,18 @@ function Result.__tostring(r)
     elseif r.certified and #r.history == 1 then
       say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")
     elseif #r.starts > 1 then
-      local certified = 0
-      for _, st in ipairs(r.starts) do certified = certified + (st.certified and 1 or 0) end
-      say("  (%d starts, each another path to a solution, %d certified%s)", #r.starts, certified,
-          r.certified and "; alpha is the lowest" or "")
+      local certified, went_on = 0, nil
+      for _, st in ipairs(r.starts) do
+        certified = certified + (st.certified and 1 or 0)
+        if st.continues then went_on = st end
+      end
+      local paths = #r.starts - (went_on and 1 or 0)
+      say("  (%d start%s, each another path to a solution, %d certified%s)", paths,
+          paths == 1 and "" or "s", certified, r.certified and "; alpha is the lowest" or "")
+      if went_on then
+        say("  start %d, cut at its cap, went on for %d more fixed LPs%s", went_on.continues,
+            #r.history[#r.starts] - 1, went_on.certified and " and certified" or "")
+      end
     end
   end
   if r.ipopt then

@@ -890,6 +890,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
             set_number(L, "time", st->seconds);
             set_boolean(L, "certified", st->alpha == st->alpha);
             if (st->alpha == st->alpha) set_number(L, "alpha", st->alpha);
+            if (st->continues) set_integer(L, "continues", st->continues);
             lua_rawseti(L, -2, k + 1);
         }
         lua_setfield(L, -2, "starts");

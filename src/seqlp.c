@@ -35,6 +35,7 @@ typedef struct run {
     double *resist; /* 3D: per joint, the most a pyramid edge resists its motion */
     double *speed;  /* 3D: per joint, how fast it slides (and twists) */
     double *coh;    /* per point: the cohesion of the next fixed LP */
+    double *n_first, *coh_first; /* r->n and r->coh where start 0 stopped */
     int cohesive;   /* some point has cohesion */
     double t0;             /* when the run began */
     int iterations;        /* of the random-state LPs */
@@ -75,6 +76,8 @@ static void run_free(run *r)
     bl_system_free(r->cone);
     bl_system_free(r->fixed);
     free(r->n);
+    free(r->n_first);
+    free(r->coh_first);
     free(r->lo);
     free(r->hi);
     free(r->clo);
@@ -553,23 +556,40 @@ static int certify_ahead(const run *r, const bl_seqlp_options *o)
            bl_lp_leaves_core(b->lp, b->threads, r->cone->nrows, r->cone->ncols);
 }
 
-/* One start: LPs with fixed shear capacities from the normal forces r->n
- * until alpha settles and a certificate is found (returns 1, and keeps the
- * answer in r->best when it is the lowest yet), the cap is reached or an LP
- * fails (0, with *stop set for a failure that should end the whole run), or
- * an error (-1). */
-static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double prev,
+/* What a start carries from one fixed LP to the next besides the normal
+ * forces and cohesion (r->n, r->coh), so that a start cut at its cap can
+ * go on where it stopped (bl_seqlp_solve). */
+typedef struct start_state {
+    double beta, last; /* the relaxation and the last change of alpha */
+    double prev;       /* the alpha before the next LP */
+    int turns, fails;  /* reversals of alpha; failed certificates */
+    int done, cap;     /* fixed LPs solved; the last one allowed */
+} start_state;
+
+static start_state fresh_start(const bl_seqlp_options *o, double from)
+{
+    return (start_state){.beta = o->beta, .prev = from, .cap = o->max_lps};
+}
+
+/* One start, or the rest of one: LPs with fixed shear capacities from the
+ * normal forces r->n until alpha settles and a certificate is found
+ * (returns 1, and keeps the answer in r->best when it is the lowest yet),
+ * the cap is reached (0, with ss->done == ss->cap) or an LP fails (0, with
+ * *stop set for a failure that should end the whole run), or an error
+ * (-1). */
+static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_state *ss,
                      bl_lp_status *stop, bl_error *err)
 {
     const bl_system *f = r->fixed;
     *stop = BL_LP_OPTIMAL;
-    double beta = o->beta, last = 0.0;
-    int turns = 0;
+    double beta = ss->beta, last = ss->last, prev = ss->prev;
+    int turns = ss->turns;
     int ahead = 0; /* LP j was solved beside the certificate of LP j - 1 */
-    int fails = 0; /* failed certificates of this start */
+    int fails = ss->fails; /* failed certificates of this start */
     int nearest = o->nearest >= 0 ? o->nearest : BL_SEQLP_NEAREST;
     bl_lp_status st = BL_LP_OPTIMAL;
-    for (int j = 0; j < o->max_lps; j++) {
+    int j;
+    for (j = ss->done; j < ss->cap; j++) {
         if (!ahead) {
             bl_system_fixed_bounds(f, r->n, r->coh, r->lo, r->hi);
             if (!r->lp_fixed) {
@@ -631,7 +651,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
             /* the next LP waits for the nearest forces once they follow */
             int near_next = nearest > 0 && fails + 1 >= nearest;
             s->start[s->nstarts - 1].certificates++;
-            if (j + 1 < o->max_lps && !near_next && certify_ahead(r, o) &&
+            if (j + 1 < ss->cap && !near_next && certify_ahead(r, o) &&
                 bl_lp_mark(r->lp_fixed) == 0) {
                 /* the certificate on another thread, the next LP here */
                 memcpy(r->yc, y, (size_t)f->nrows * sizeof *r->yc);
@@ -669,7 +689,26 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, double p
         if (near_now && nearest_forces(r, a, y, o, s, err)) return -1;
         prev = a;
     }
+    *ss = (start_state){beta, last, prev, turns, fails, j, ss->cap};
     return 0;
+}
+
+/* one_start with a history of its own (continuing the 1-based start
+ * `continues`, or 0) and what it cost: the LPs and iterations since lps0
+ * and its0 and the time since t0, which include the LP of a restart's
+ * random state. */
+static int timed_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_state *ss,
+                       int continues, int lps0, int its0, double t0, bl_lp_status *stop,
+                       bl_error *err)
+{
+    if (start_history(s, ss->prev)) return bl_error_set(err, "solve: out of memory");
+    s->start[s->nstarts - 1].continues = continues;
+    int done = one_start(r, o, s, ss, stop, err);
+    bl_start *st = &s->start[s->nstarts - 1];
+    st->lps = s->lps - lps0;
+    st->iterations = s->iterations + r->iterations - its0;
+    st->seconds = bl_clock() - t0;
+    return done;
 }
 
 /* splitmix64: a small, well-mixed generator; the same seed gives the same
@@ -942,6 +981,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.resist = calloc((size_t)np + 1, sizeof *r.resist);
     r.speed = calloc((size_t)np + 1, sizeof *r.speed);
     r.coh = calloc((size_t)np + 1, sizeof *r.coh);
+    r.n_first = malloc(((size_t)np + 1) * sizeof *r.n_first);
+    r.coh_first = malloc(((size_t)np + 1) * sizeof *r.coh_first);
     for (int p = 0; p < np; p++) r.cohesive |= r.fixed->cohesion[p] > 0.0;
     r.lo = malloc((size_t)nc * sizeof *r.lo);
     r.hi = malloc((size_t)nc * sizeof *r.hi);
@@ -953,7 +994,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.best_y = malloc((size_t)r.fixed->nrows * sizeof *r.best_y);
     r.yc = malloc((size_t)r.fixed->nrows * sizeof *r.yc);
     r.xc = malloc((size_t)ncc * sizeof *r.xc);
-    if (!r.n || !r.dn || !r.dt || !r.dt3 || !r.resist || !r.speed || !r.coh || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
+    if (!r.n || !r.n_first || !r.coh_first || !r.dn || !r.dt || !r.dt3 || !r.resist ||
+        !r.speed || !r.coh || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
         !r.best_x || !r.best_y || !r.yc || !r.xc) {
         bl_error_set(err, "solve: out of memory");
         goto fail;
@@ -982,6 +1024,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     /* Without sliding joints the first LP settles and certifies at once.
      * How many restarts follow is decided after start 0 (below). */
     int retry = 0, starts = 0;
+    start_state first = {0}; /* where start 0 stopped */
     for (int k = 0; k == 0 || (k <= starts && stop == BL_LP_OPTIMAL && !(retry && r.found)); k++) {
         double from = r.found ? r.best_alpha : s->alpha_assoc;
         int lps0 = s->lps, its0 = s->iterations + r.iterations;
@@ -1007,17 +1050,14 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             }
         }
         memcpy(r.coh, r.fixed->cohesion, (size_t)np * sizeof *r.coh);
-        if (start_history(s, from)) {
-            bl_error_set(err, "solve: out of memory");
-            goto fail;
-        }
-        int done = one_start(&r, o, s, from, &stop, err);
-        bl_start *st = &s->start[s->nstarts - 1];
-        st->lps = s->lps - lps0;
-        st->iterations = s->iterations + r.iterations - its0;
-        st->seconds = bl_clock() - tk;
-        if (done < 0) goto fail;
+        start_state ss = fresh_start(o, from);
+        if (timed_start(&r, o, s, &ss, 0, lps0, its0, tk, &stop, err) < 0) goto fail;
         if (k == 0) {
+            first = ss;
+            if (first.done == first.cap) {
+                memcpy(r.n_first, r.n, (size_t)np * sizeof *r.n);
+                memcpy(r.coh_first, r.coh, (size_t)np * sizeof *r.coh);
+            }
             if (!sliding) {
                 s->alpha_rigid = s->alpha_assoc;
                 s->assoc_is_solution = 1;
@@ -1037,12 +1077,33 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         }
     }
 
+    /* By default, when no start has certified and start 0 was cut at its
+     * cap, start 0 goes on where it stopped, once, for as many LPs again:
+     * a sequence that settles slowly can need more than the cap (a
+     * 2,048-block wall at mu = 1 certified at LP 140 of one start, where
+     * four starts of 100 certified nothing; doc/seqlp.md, "Where the
+     * method fails or is slow"). */
+    if (!r.found && stop == BL_LP_OPTIMAL && sliding && o->starts < 0 && first.cap > 0 &&
+        first.done == first.cap) {
+        memcpy(r.n, r.n_first, (size_t)np * sizeof *r.n);
+        memcpy(r.coh, r.coh_first, (size_t)np * sizeof *r.coh);
+        first.cap += o->max_lps;
+        if (timed_start(&r, o, s, &first, 1, s->lps, s->iterations + r.iterations, bl_clock(),
+                        &stop, err) < 0)
+            goto fail;
+    }
+
     if (stop == BL_LP_INTERRUPTED) {
         s->interrupted = 1;
-        snprintf(s->note, sizeof s->note,
-                 "stopped by Ctrl-C after %d LPs, in start %d of %d: %s", s->lps, s->nstarts,
-                 starts + 1, r.found ? "the lowest certified answer so far; lower ones may exist"
-                                     : "nothing certified yet");
+        const char *what = r.found ? "the lowest certified answer so far; lower ones may exist"
+                                   : "nothing certified yet";
+        if (s->start[s->nstarts - 1].continues)
+            snprintf(s->note, sizeof s->note,
+                     "stopped by Ctrl-C after %d LPs, in start 1 going on after the restarts: %s",
+                     s->lps, what);
+        else
+            snprintf(s->note, sizeof s->note, "stopped by Ctrl-C after %d LPs, in start %d of %d: %s",
+                     s->lps, s->nstarts, starts + 1, what);
     }
     if (r.found) {
         s->alpha = r.best_alpha;

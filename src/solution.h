@@ -62,6 +62,7 @@ typedef struct bl_timings {
  * LPs and certificates), and its certified alpha (NAN: none). */
 typedef struct bl_start {
     int first;
+    int continues;  /* the 1-based start this one goes on with, or 0 */
     int lps, iterations;
     int certificates, nearest; /* certificates tried, nearest-force steps */
     double seconds;

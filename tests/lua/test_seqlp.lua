@@ -32,24 +32,35 @@ T.ok(#r.starts == 1 and r.starts[1].certified and r.starts[1].alpha == r.alpha
 
 -- The cap: W4 needs about 20 fixed LPs; with 3 a start ends uncertified and
 -- says so.  By default further starts follow (each with its random stress
--- state's LP and 3 fixed LPs); the starts' LPs and iterations add up to the
--- whole but the associative and unlimited-friction LPs.
+-- state's LP and 3 fixed LPs), and then start 1 goes on where it stopped
+-- for 3 more; the starts' LPs and iterations add up to the whole but the
+-- associative and unlimited-friction LPs.
 local assoc_its = solve { flow = "associative" }.iterations
 r = solve { flow = "nonassociative", lps = 3, starts = 0 }
 T.ok(r.status == "not certified" and r.alpha ~= r.alpha and #r.history == 1 and #r.history[1] == 4
      and not r.starts[1].certified and r.starts[1].lps == 3,
      "W4, lps = 3, one start: not certified at the cap, no alpha, 3 fixed LPs kept",
      ("%s, %d LPs"):format(r.status, #r.history[1] - 1))
+local one = r
 r = solve { flow = "nonassociative", lps = 3 }
-local lps, its, ok = 0, 0, #r.starts == 4
+local lps, its, ok = 0, 0, #r.starts == 5
 for k, st in ipairs(r.starts) do
   lps, its = lps + st.lps, its + st.iterations
-  ok = ok and not st.certified and st.lps == (k == 1 and 3 or 4) and #r.history[k] == 4
+  ok = ok and not st.certified and st.lps == ((k == 1 or k == 5) and 3 or 4) and #r.history[k] == 4
+     and st.continues == (k == 5 and 1 or nil)
 end
 T.ok(ok and r.status == "not certified" and lps == r.lps - 2 and its > 0
      and r.iterations - its > assoc_its,
-     "W4, lps = 3, default: 3 more starts while none certifies, the starts' LPs adding up",
-     ("%d starts, %d of %d LPs"):format(#r.starts, lps, r.lps))
+     "W4, lps = 3, default: 3 more starts while none certifies, then start 1 goes on for 3 "
+     .. "more, the starts' LPs adding up", ("%d starts, %d of %d LPs"):format(#r.starts, lps, r.lps))
+-- Going on where it stopped: the continuation begins at start 1's last
+-- alpha, and its first LP has the capacities of a single start's fourth
+-- (the same LP, hence the same optimal alpha, to 1e-9 relative).
+local six = solve { flow = "nonassociative", lps = 6, starts = 0 }
+T.ok(r.history[5][1] == one.history[1][4]
+     and math.abs(r.history[5][2] - six.history[1][5]) <= 1e-9 * six.history[1][5],
+     "W4: start 1 going on after the restarts solves the LP a single start of 6 solves fourth",
+     ("%.9g %.9g"):format(r.history[5][2], six.history[1][5]))
 
 -- The default: the non-associative answer wherever a joint has finite
 -- friction, the associative one beside it; rigid joints need no sequence.
