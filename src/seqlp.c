@@ -393,6 +393,14 @@ static int start_history(bl_solution *s, double from)
     return append(s, from);
 }
 
+/* The number the user knows the current start by: a start that went on
+ * after the restarts is the one it continues. */
+static int start_number(const bl_solution *s)
+{
+    const bl_start *st = &s->start[s->nstarts - 1];
+    return st->continues ? st->continues : s->nstarts;
+}
+
 /* Writes into s->note which blocks the Farkas ray of the infeasible fixed
  * LP weighs on: those whose equilibrium the capacities cannot meet. */
 static void name_blocks(run *r, bl_solution *s, int lp)
@@ -401,7 +409,7 @@ static void name_blocks(run *r, bl_solution *s, int lp)
     const bl_model *m = s->model;
     size_t len = (size_t)snprintf(s->note, sizeof s->note,
                                   "start %d, LP %d had no equilibrium with the relaxed friction "
-                                  "capacities", s->nstarts, lp + 1);
+                                  "capacities", start_number(s), lp + 1);
     if (!ray) return;
     double big = 0.0;
     for (int i = 0; i < r->fixed->nrows; i++) big = fmax(big, fabs(ray[i]));
@@ -619,7 +627,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
             s->iterations += bl_lp_iterations(r->lp_fixed);
             if (o->base.verbose)
                 fprintf(stderr, "seqlp start %d LP %d: no convergence, again with the least normal "
-                                "force\n", s->nstarts, j + 1);
+                                "force\n", start_number(s), j + 1);
             bl_lp_free(r->lp_fixed);
             r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
             if (!r->lp_fixed) return -1;
@@ -638,9 +646,9 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
         double a = x[f->nforce];
         if (append(s, a)) return bl_error_set(err, "solve: out of memory");
         if (o->base.verbose)
-            fprintf(stderr, "seqlp start %d LP %d: alpha %.8g\n", s->nstarts, j + 1, a);
+            fprintf(stderr, "seqlp start %d LP %d: alpha %.8g\n", start_number(s), j + 1, a);
         else if (o->progress && bl_clock() - r->t0 > 0.5) {
-            fprintf(stderr, "\rseqlp: start %d, LP %d, alpha %.6g   ", s->nstarts, j + 1, a);
+            fprintf(stderr, "\rseqlp: start %d, LP %d, alpha %.6g   ", start_number(s), j + 1, a);
             r->shown = 1;
         }
         int near_now = 0; /* the nearest forces follow this LP's failed certificate */
