@@ -23,6 +23,7 @@ typedef struct bl_napath_result {
     double alpha;          /* the path's alpha at the last one */
     double complementarity; /* sum of the products over 1 + |alpha| */
     double mu;             /* their mean */
+    int deep;              /* the point went on past target to deep */
     double seconds;
 } bl_napath_result;
 
@@ -34,7 +35,11 @@ int bl_napath_applies(const bl_system *s);
  * over 1 + |alpha|) is at most target with the residuals below 1e-6, in at
  * most max_iterations steps; a path that stalls (products not halved in 20
  * steps) or reaches its last step is still taken when its complementarity
- * is at most near (>= target).  The last point in the terms of s's columns (ncols
+ * is at most near (>= target).  From a point at target it goes on, while
+ * the products halve at least every few steps, to one at most deep
+ * (< target; res->deep is then 1), and returns that one instead; when it
+ * does not get there, the point at target and its result stand (deep >=
+ * target: no such phase).  The last point in the terms of s's columns (ncols
  * each): x (forces and alpha), zl and zu the multipliers of the bounds
  * 0 <= n and -mu n <= t <= mu n, and y (nrows) the mechanism, with the sign
  * of bl_lp_dual: the point of the fixed LP whose capacities are mu times
@@ -42,7 +47,8 @@ int bl_napath_applies(const bl_system *s);
  * 1 when the path did not get there (stalled or at the cap farther than
  * near, a step that is not finite, a factorization that failed: nothing
  * is set), or -1 with err set (out of memory). */
-int bl_napath_run(const bl_system *s, double target, double near, int max_iterations, int verbose,
-                  double *x, double *zl, double *zu, double *y, bl_napath_result *res, bl_error *err);
+int bl_napath_run(const bl_system *s, double target, double near, double deep, int max_iterations,
+                  int verbose, double *x, double *zl, double *zu, double *y,
+                  bl_napath_result *res, bl_error *err);
 
 #endif

@@ -63,10 +63,12 @@ typedef struct path_job {
     pthread_t thread;
 } path_job;
 
-/* The first fixed LP starts from the path's point (lp.h, bl_lp_warm). */
+/* The first fixed LP starts from the path's point (lp.h, bl_lp_warm); from
+ * a point past the target, with its products raised to the target's level. */
 static void path_warm(const path_job *j, bl_lp *lp)
 {
-    bl_lp_warm(lp, j->x, j->zl, j->zu, j->y, j->res.mu);
+    double raise = j->res.deep ? BL_SEQLP_PATH_PRODUCTS / j->res.complementarity : 1.0;
+    bl_lp_warm(lp, j->x, j->zl, j->zu, j->y, j->res.mu * raise);
 }
 
 static void run_free(run *r)
@@ -849,7 +851,7 @@ static void *run_path(void *arg)
 {
     path_job *j = arg;
     j->status = bl_napath_run(j->system, BL_SEQLP_PATH_PRODUCTS, BL_SEQLP_PATH_NEAR,
-                              BL_SEQLP_PATH_STEPS, j->verbose, j->x, j->zl, j->zu, j->y, &j->res,
+                              BL_SEQLP_PATH_DEEP, BL_SEQLP_PATH_STEPS, j->verbose, j->x, j->zl, j->zu, j->y, &j->res,
                               &j->err);
     return NULL;
 }
@@ -1058,7 +1060,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             }
         }
         memcpy(r.coh, r.fixed->cohesion, (size_t)np * sizeof *r.coh);
-        start_state ss = fresh_start(o, from);
+        /* from a path that went deep, start 0 begins at the path's alpha */
+        start_state ss = fresh_start(o, k == 0 && s->path_taken && pj.res.deep ? s->path_alpha : from);
         if (timed_start(&r, o, s, &ss, 0, lps0, its0, tk, &stop, err) < 0) goto fail;
         if (k == 0) {
             first = ss;

@@ -14,7 +14,10 @@
  * products are at most the given "near": its point then is the one whose
  * products were measured (recomputed here from the returned forces and
  * multipliers, to 1e-9) and in equilibrium (residual below 1e-6 of the
- * loads). */
+ * loads).
+ *
+ * Past its target towards a deeper level (deep_or_the_targets_point): the
+ * deeper point when it gets there, else the target's, unchanged. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -58,7 +61,7 @@ static double path_alpha(const bl_system *s, double *x_out)
     double *x = calloc((size_t)s->ncols, sizeof *x), *zl = calloc((size_t)s->ncols, sizeof *zl);
     double *zu = calloc((size_t)s->ncols, sizeof *zu), *y = calloc((size_t)s->nrows, sizeof *y);
     bl_napath_result res;
-    assert_int_equal(bl_napath_run(s, 1e-10, 1e-10, 100, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-10, 1e-10, 1e-10, 100, 0, x, zl, zu, y, &res, NULL), 0);
     assert_true(res.complementarity <= 1e-10);
     if (x_out) memcpy(x_out, x, (size_t)s->ncols * sizeof *x);
     free(x);
@@ -102,7 +105,7 @@ static void warm_from_the_path(void **state)
     double *y = calloc((size_t)s->nrows, sizeof *y), *n = calloc((size_t)s->npoints, sizeof *n);
     double *lo = calloc(nc, sizeof *lo), *hi = calloc(nc, sizeof *hi);
     bl_napath_result res;
-    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 100, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-3, 100, 0, x, zl, zu, y, &res, NULL), 0);
     for (size_t k = 0; k < (size_t)s->nforce; k++)
         if (s->col_kind[k] == BL_COL_NORMAL) n[s->col_point[k]] = x[k];
     bl_system_fixed_bounds(s, n, s->cohesion, lo, hi);
@@ -160,11 +163,11 @@ static void cut_short_taken_when_near(void **state)
     double *x = calloc(nc, sizeof *x), *zl = calloc(nc, sizeof *zl), *zu = calloc(nc, sizeof *zu);
     double *y = calloc((size_t)s->nrows, sizeof *y), *r = calloc((size_t)s->nrows, sizeof *r);
     bl_napath_result res;
-    assert_int_equal(bl_napath_run(s, 1e-12, 1e-12, 12, 0, x, zl, zu, y, &res, NULL), 1);
+    assert_int_equal(bl_napath_run(s, 1e-12, 1e-12, 1e-12, 12, 0, x, zl, zu, y, &res, NULL), 1);
     double reached = res.complementarity;
     assert_true(reached > 1e-12);
-    assert_int_equal(bl_napath_run(s, 1e-12, 0.5 * reached, 12, 0, x, zl, zu, y, &res, NULL), 1);
-    assert_int_equal(bl_napath_run(s, 1e-12, 2.0 * reached, 12, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-12, 0.5 * reached, 1e-12, 12, 0, x, zl, zu, y, &res, NULL), 1);
+    assert_int_equal(bl_napath_run(s, 1e-12, 2.0 * reached, 1e-12, 12, 0, x, zl, zu, y, &res, NULL), 0);
     double own = products_of(s, x, zl, zu), bmax = 0.0, rmax = 0.0;
     for (int i = 0; i < s->nrows; i++) {
         r[i] = s->rhs[i];
@@ -187,6 +190,59 @@ static void cut_short_taken_when_near(void **state)
     bl_system_free(s);
 }
 
+/* W4's path past its target: to deep = 1e-8 it gets there (res.deep), its
+ * point's products as recomputed from the returned columns (to 1e-9) and
+ * in equilibrium; towards 1e-30, which it cannot reach, the point at the
+ * target is returned, the same bit for bit as from a path without the
+ * deeper phase, with all the steps taken counted. */
+static void deep_or_the_targets_point(void **state)
+{
+    (void)state;
+    bl_system *s = w4(BL_FRICTION_FIXED);
+    size_t nc = (size_t)s->ncols, nr = (size_t)s->nrows;
+    double *x = calloc(nc, sizeof *x), *zl = calloc(nc, sizeof *zl), *zu = calloc(nc, sizeof *zu);
+    double *y = calloc(nr, sizeof *y), *x0 = calloc(nc, sizeof *x0), *y0 = calloc(nr, sizeof *y0);
+    double *r = calloc(nr, sizeof *r);
+    bl_napath_result at, res;
+    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-3, 100, 0, x0, zl, zu, y0, &at, NULL), 0);
+    assert_int_equal(at.deep, 0);
+
+    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-8, 100, 0, x, zl, zu, y, &res, NULL), 0);
+    double own = products_of(s, x, zl, zu), bmax = 0.0, rmax = 0.0;
+    for (size_t i = 0; i < nr; i++) {
+        r[i] = s->rhs[i];
+        bmax = fmax(bmax, fabs(s->rhs[i]));
+    }
+    for (int k = 0; k < s->ncols; k++)
+        for (int q = s->colptr[k]; q < s->colptr[k + 1]; q++) r[s->rowind[q]] -= s->val[q] * x[k];
+    for (size_t i = 0; i < nr; i++) rmax = fmax(rmax, fabs(r[i]));
+    print_message("# W4's path: products %.1e at %d steps, %.1e at %d going deeper (recomputed "
+                  "%.1e), equilibrium residual %.1e of %.1e\n",
+                  at.complementarity, at.iterations, res.complementarity, res.iterations, own,
+                  rmax, bmax);
+    assert_int_equal(res.deep, 1);
+    assert_true(res.complementarity <= 1e-8 && res.iterations > at.iterations);
+    assert_true(fabs(own - res.complementarity) <= 1e-9 * res.complementarity);
+    assert_true(rmax <= 1e-6 * bmax);
+
+    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-30, 100, 0, x, zl, zu, y, &res, NULL), 0);
+    print_message("# towards 1e-30: %d steps, the point at %d returned\n", res.iterations,
+                  at.iterations);
+    assert_int_equal(res.deep, 0);
+    assert_true(res.iterations > at.iterations);
+    assert_true(res.complementarity == at.complementarity && res.alpha == at.alpha);
+    assert_memory_equal(x, x0, nc * sizeof *x);
+    assert_memory_equal(y, y0, nr * sizeof *y);
+    free(x);
+    free(zl);
+    free(zu);
+    free(y);
+    free(x0);
+    free(y0);
+    free(r);
+    bl_system_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -195,6 +251,7 @@ int main(void)
         cmocka_unit_test(column_overturns_whole),
         cmocka_unit_test(warm_from_the_path),
         cmocka_unit_test(cut_short_taken_when_near),
+        cmocka_unit_test(deep_or_the_targets_point),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
