@@ -352,6 +352,18 @@ do
   T.ok(r.path and r.path.taken and r.path.steps > 0 and r.certified and r.verified and r.alpha < r.alpha_assoc,
        "1,040-block wall from the path: certified and verified, below the associative alpha",
        ("%s %s %.6f vs %.6f"):format(r.status, tostring(r.verified), r.alpha, r.alpha_assoc))
+  -- Its path goes on past 1e-3 to 1e-6 (BL_SEQLP_PATH_DEEP); the first
+  -- start then begins at the path's alpha and certifies after one fixed
+  -- LP.  The sequence from the associative forces (path = false, 13 LPs)
+  -- reaches the same solution: the same alpha to 1e-4 (the digits the
+  -- sequence determines, doc/seqlp.md 3).
+  local a = solve { flow = "nonassociative", starts = 0, progress = false, path = false }
+  T.ok(r.path.products <= 1e-6 and r.history[1][1] == r.path.alpha and #r.history[1] == 2
+       and a.certified and math.abs(r.alpha - a.alpha) <= 1e-4 * a.alpha,
+       "1,040-block wall: the path past 1e-6, one fixed LP from its alpha, the answer of the "
+       .. "sequence from the associative forces",
+       ("products %.1e, %d fixed LPs, %.6f vs %.6f"):format(r.path.products, #r.history[1] - 1,
+                                                         r.alpha, a.alpha))
 end
 
 -- A 30 x 30 wall with windows and no lintels at mu = 0.5, one start: its
