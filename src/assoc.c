@@ -42,7 +42,6 @@ bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const
 
 int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl_error *err)
 {
-    bl_interrupt_clear();
     double t0 = bl_clock();
     if (!m->contacts_valid && bl_contact_detect(m, err)) return -1;
     double t1 = bl_clock();

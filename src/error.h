@@ -16,8 +16,10 @@ int bl_error_set(bl_error *err, const char *fmt, ...)
 
 /* Interruption (Ctrl-C).  The front end's signal handler calls
  * bl_interrupt_request(); long computations poll bl_interrupt_pending() and
- * stop with an "interrupted" status.  The flag is cleared when a new solve
- * starts. */
+ * stop with an "interrupted" status.  The front end clears the flag when
+ * a new solve starts, and only then: a solve made of several parts (the
+ * path and the associative LP before a sequence of LPs) stops in whichever
+ * part comes next. */
 void bl_interrupt_request(void);
 void bl_interrupt_clear(void);
 int bl_interrupt_pending(void);

@@ -1154,6 +1154,7 @@ static int model_solve(lua_State *L)
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
     sigemptyset(&sa.sa_mask);
+    bl_interrupt_clear();
     sigaction(SIGINT, &sa, &old);
     previous_sigint = old;
     so.base = o;

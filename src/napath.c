@@ -452,7 +452,7 @@ static int export_point(const bl_system *s, const point *x, int m, double *xo, d
 }
 
 int bl_napath_run(const bl_system *s, double target, double near, double deep, int max_iterations,
-                  int verbose, double *xo, double *zl, double *zu, double *yo,
+                  int report, double *xo, double *zl, double *zu, double *yo,
                   bl_napath_result *res, bl_error *err)
 {
     double t0 = bl_clock();
@@ -464,6 +464,7 @@ int bl_napath_run(const bl_system *s, double target, double near, double deep, i
     double *c0 = NULL, *c1 = NULL, *c2 = NULL;
     int ret = -1;
     int at_target = 0;           /* the outputs hold the point at target; going deeper */
+    int shown = 0;               /* a progress line is on the screen */
     bl_napath_result snap = {0}; /* that point's result */
     if (setup(&p, s, err)) goto done;
     int P = p.P, m = p.m;
@@ -502,9 +503,13 @@ int bl_napath_run(const bl_system *s, double target, double near, double deep, i
         res->mu = mu;
         res->alpha = x.a;
         res->iterations = it;
-        if (verbose)
+        if (report == BL_NAPATH_VERBOSE)
             fprintf(stderr, "napath %3d  alpha %.10g  primal %.1e  dual %.1e  products %.1e\n", it, x.a,
                     ep, ed, res->complementarity);
+        else if (report == BL_NAPATH_PROGRESS && bl_clock() - t0 > 0.5) {
+            fprintf(stderr, "\rseqlp: the path, step %d, products %.1e   ", it, res->complementarity);
+            shown = 1;
+        }
         if (!isfinite(gap) || !isfinite(ep) || !isfinite(ed)) goto done;
         int central = ep <= 1e-6 && ed <= 1e-6;
         if (at_target) {
@@ -600,6 +605,7 @@ done:
         res->iterations = steps;
     }
     res->seconds = bl_clock() - t0;
+    if (shown) fprintf(stderr, "\r%60s\r", "");
     path_free(&p);
     point_free(&x);
     point_free(&d);

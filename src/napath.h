@@ -8,10 +8,11 @@
  * associative LP's optimality conditions without the dilatancy term.  The
  * products of the complementary pairs are driven to zero along a smoothed
  * path from a point inside every bound, by Newton steps on a linear system
- * that is not symmetric (UMFPACK).  The problem is not monotone, so the
+ * that is not symmetric.  The problem is not monotone, so the
  * path need not reach a solution; its normal forces, part of the way
  * there, start the sequence of LPs, which then certifies an answer in far
- * fewer LPs than from the associative forces (doc/seqlp.md 15). */
+ * fewer LPs than from the associative forces (doc/seqlp.md 15).  The
+ * linear systems are factored by MUMPS (LU). */
 #ifndef BL_NAPATH_H
 #define BL_NAPATH_H
 
@@ -26,6 +27,11 @@ typedef struct bl_napath_result {
     int deep;              /* the point went on past target to deep */
     double seconds;
 } bl_napath_result;
+
+/* What bl_napath_run writes on stderr: nothing; a line per step; or,
+ * from half a second on, one progress line rewritten at every step
+ * ("seqlp: the path, step k, products p") and cleared at the end. */
+enum { BL_NAPATH_QUIET, BL_NAPATH_VERBOSE, BL_NAPATH_PROGRESS };
 
 /* Whether s (a BL_FRICTION_FIXED system) is one the path is made for: 2D,
  * every contact point with finite, non-zero friction and no cohesion. */
@@ -48,7 +54,7 @@ int bl_napath_applies(const bl_system *s);
  * near, a step that is not finite, a factorization that failed: nothing
  * is set), or -1 with err set (out of memory). */
 int bl_napath_run(const bl_system *s, double target, double near, double deep, int max_iterations,
-                  int verbose, double *x, double *zl, double *zu, double *y,
+                  int report, double *x, double *zl, double *zu, double *y,
                   bl_napath_result *res, bl_error *err);
 
 #endif

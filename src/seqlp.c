@@ -57,7 +57,7 @@ typedef struct run {
 typedef struct path_job {
     bl_system *system;
     double *x, *zl, *zu, *y; /* its last point (napath.h) */
-    int verbose, status, beside;
+    int report, status, beside; /* report: BL_NAPATH_QUIET, ... */
     bl_napath_result res;
     bl_error err;
     pthread_t thread;
@@ -851,7 +851,7 @@ static void *run_path(void *arg)
 {
     path_job *j = arg;
     j->status = bl_napath_run(j->system, BL_SEQLP_PATH_PRODUCTS, BL_SEQLP_PATH_NEAR,
-                              BL_SEQLP_PATH_DEEP, BL_SEQLP_PATH_STEPS, j->verbose, j->x, j->zl, j->zu, j->y, &j->res,
+                              BL_SEQLP_PATH_DEEP, BL_SEQLP_PATH_STEPS, j->report, j->x, j->zl, j->zu, j->y, &j->res,
                               &j->err);
     return NULL;
 }
@@ -898,7 +898,9 @@ static int path_start(bl_model *m, const bl_seqlp_options *o, path_job *j, bl_er
         path_free(j);
         return 0;
     }
-    j->verbose = o->base.verbose;
+    j->report = o->base.verbose ? BL_NAPATH_VERBOSE
+                : o->progress     ? BL_NAPATH_PROGRESS
+                                  : BL_NAPATH_QUIET;
     if (!o->base.verbose && bl_lp_leaves_core(o->base.lp, o->base.threads, f->nrows, f->ncols))
         j->beside = pthread_create(&j->thread, NULL, run_path, j) == 0;
     if (!j->beside) run_path(j);

@@ -121,6 +121,35 @@ LUA
   check "last() keeps the certified answer of the interrupted sequence (W4 alpha <= 0.26379)" \
     grep -qE 'kept[[:space:]]+true[[:space:]]+true[[:space:]]+true[[:space:]]+true[[:space:]]+true[[:space:]]+true' <<<"$screen"
 
+  # Ctrl-C during the path that starts the sequence of LPs (a 3,630-block
+  # wall, where the path runs for seconds before the associative LP): the
+  # whole solve stops, not just the path.
+  cat > "$tmp/rb60.lua" <<'LUA'
+model { mu = 0.65 }
+local c = {}
+for i = 1, 60 do
+  local row = i % 2 == 1 and { .5 } or {}
+  for _ = 1, 60 do row[#row + 1] = 1 end
+  if i % 2 == 1 then row[#row] = .5 end
+  c[i] = row
+end
+wall { courses = c, unit = { 0.4, 0.175 } }
+LUA
+  tmux new-session -d -s "$s" -x 200 -y 30 "HOME=$tmp $bin -i $tmp/rb60.lua"
+  sleep 1
+  tmux send-keys -t "$s" "t0 = blocklim.clock(); r = solve{}" Enter
+  sleep 1.5
+  tmux send-keys -t "$s" C-c
+  sleep 1.5
+  tmux send-keys -t "$s" 'print("path stopped", blocklim.clock() - t0 < 4.5, r == nil)' Enter
+  sleep 1
+  screen=$(tmux capture-pane -p -t "$s")
+  tmux kill-session -t "$s" 2>/dev/null
+  check "Ctrl-C during the path of the sequence stops the whole solve" \
+    grep -q 'solve: interrupted (Ctrl-C); the model is as it was' <<<"$screen"
+  check "... and returns to the prompt at once" \
+    grep -qE 'path stopped[[:space:]]+true[[:space:]]+true' <<<"$screen"
+
   # Ctrl-C during Ipopt (method "mpec"): its intermediate callback stops it.
   tmux new-session -d -s "$s" -x 200 -y 30 "HOME=$tmp $bin -i $tmp/big.lua"
   sleep 1
