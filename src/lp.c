@@ -18,10 +18,15 @@ bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows, int ncols)
     return nrows <= BL_LP_AUTO_ROWS && !wide ? BL_LP_SIMPLEX : BL_LP_IPM;
 }
 
+int bl_lp_cores(int threads)
+{
+    int allowed = threads > 0 ? threads : omp_get_max_threads(), procs = omp_get_num_procs();
+    return allowed < procs ? allowed : procs;
+}
+
 int bl_lp_leaves_core(bl_lp_engine_kind asked, int threads, int nrows, int ncols)
 {
-    int allowed = threads > 0 ? threads : omp_get_max_threads();
-    if (allowed < 2 || omp_get_num_procs() < 2) return 0;
+    if (bl_lp_cores(threads) < 2) return 0;
     if (bl_lp_choose(asked, nrows, ncols) == BL_LP_SIMPLEX) return 1;
     return ncols < BL_IPM_PAR_COLS && nrows < BL_IPM_SPLIT_ROWS;
 }

@@ -35,8 +35,11 @@ typedef enum bl_lp_engine_kind {
 #define BL_LP_AUTO_COLS 2000
 bl_lp_engine_kind bl_lp_choose(bl_lp_engine_kind asked, int nrows, int ncols);
 
-/* 1 when the threads allowed (threads, 0: OMP_NUM_THREADS or every core)
- * are two or more, on two or more cores, and an LP of nrows x ncols on the
+/* The cores a solve may use: the threads allowed (threads, 0:
+ * OMP_NUM_THREADS or every core), at most the processors. */
+int bl_lp_cores(int threads);
+
+/* 1 when bl_lp_cores(threads) is two or more and an LP of nrows x ncols on the
  * engine chosen for "asked" keeps only one of them busy: the simplex
  * always, the interior point below the sizes where it threads its loops
  * and splits its factor (lp_engine.h).  Another computation can then run
