@@ -526,6 +526,7 @@ static int starting_point(ipm *p)
  * for KEEP_CAP, did about as well, 10^-3 and below far worse. */
 #define KEEP_AT 0.1
 #define KEEP_CAP 100.0
+#define WARM_PATIENCE 10
 
 static void keep_point(ipm *p, double mu)
 {
@@ -648,7 +649,9 @@ static bl_lp_status solve(void *e)
     int ray_run = 0; /* iterations in a row that passed ray_test */
     int foreign = p->k.foreign; /* the start is another problem's point */
     p->k.foreign = 0;
-    if (p->k.warm && p->k.set) warm_point(p);
+    int warm = p->k.warm && p->k.set; /* until the warm start has taken */
+    double warm_r = INFINITY;         /* its first iteration's residual */
+    if (warm) warm_point(p);
     else if (starting_point(p)) status = BL_LP_FAILED;
     for (int it = 0; status == BL_LP_ITERATION_LIMIT && it < p->set.max_iterations; it++) {
         if (bl_interrupt_pending()) { status = BL_LP_INTERRUPTED; break; }
@@ -688,6 +691,31 @@ static bl_lp_status solve(void *e)
         if (ep <= tol && eu <= tol && ed <= tol && eg <= tol) {
             status = BL_LP_OPTIMAL;
             break;
+        }
+        /* A warm start that does not take: its largest residual not halved
+         * (nor within the tolerance) in WARM_PATIENCE iterations.  The
+         * solve starts again from
+         * Mehrotra's point.  A certificate of the 10,050-block wall's
+         * sequence, its slip threshold divided by 10, started from the
+         * kept point of the certificate before it with a primal residual
+         * of 120 and mu 1e-7, and its steps stayed below 10^-2 until the
+         * limit of 200 iterations (doc/seqlp.md 12; tests/test_warm.c). */
+        if (warm) {
+            double r = fmax(fmax(ep, eu), ed);
+            if (it == 0) warm_r = r;
+            if (r <= 0.5 * warm_r || r <= tol) {
+                warm = 0;
+            } else if (it >= WARM_PATIENCE) {
+                warm = 0;
+                if (p->set.verbose) fprintf(stderr, "ipm: the warm start did not take; a cold start\n");
+                if (starting_point(p)) { status = BL_LP_FAILED; break; }
+                if (p->yprev) memcpy(p->yprev, p->y, (size_t)m * sizeof *p->yprev);
+                keep = 1;
+                stall_gap = stall_ep = low_ep = low_mu = stall_mu = INFINITY;
+                stall_it = stall_ep_it = low_ep_it = it;
+                ray_run = 0;
+                continue;
+            }
         }
         if (p->set.early_infeasible && ep > tol && ray_test(p, it, &ray_run)) {
             memcpy(p->y, p->yprev, (size_t)m * sizeof *p->y); /* the ray, for ray() */

@@ -8,6 +8,7 @@
  * equilibrium exists, it ends sooner, and its ray, checked on the matrix,
  * proves that an equilibrium would need more than ten times the forces of
  * one at 0.3; at 0.3 itself it solves as without it.
+ * A warm start far off (far_warm) falls back to a cold start.
  * Rewinding (bl_lp_mark, bl_lp_rewind): a solve taken back leaves no trace
  * on the next one, whose iterations and answer are those of the same two
  * solves made without it, to the last bit. */
@@ -214,6 +215,45 @@ static void rewind_solve(void **state)
     bl_system_free(s);
 }
 
+/* A warm start that does not take: the W4 LP started from its own answer
+ * with every force at a hundredth of its value (the rows off by nearly the
+ * whole load) and products of 1e-7.  Pinned to the boundary, such a start
+ * ran to the iteration limit of 200 (so did a certificate of the
+ * 10,050-block wall's sequence); the engine now starts again from
+ * Mehrotra's point after WARM_PATIENCE (10) iterations that do not halve
+ * its residuals, and must end at the cold solve's optimum (1e-7 relative)
+ * in at most the cold iterations plus 11. */
+static void far_warm(void **state)
+{
+    (void)state;
+    bl_system *s = w4(BL_FRICTION_CONE);
+    size_t nc = (size_t)s->ncols;
+    bl_lp *cold = make(s, s->lo, BL_LP_IPM);
+    assert_int_equal(bl_lp_solve(cold), BL_LP_OPTIMAL);
+    double *x = malloc(nc * sizeof *x), *zl = calloc(nc, sizeof *zl), *zu = calloc(nc, sizeof *zu);
+    memcpy(x, bl_lp_primal(cold), nc * sizeof *x);
+    for (int j = 0; j < s->nforce; j++) {
+        x[j] = 0.01 * x[j] + 1e-9;
+        zl[j] = 1e-7 / x[j];
+    }
+    bl_lp *far = make(s, s->lo, BL_LP_IPM);
+    assert_int_equal(bl_lp_warm(far, x, zl, zu, bl_lp_dual(cold), 1e-7), 0);
+    bl_lp_status st = bl_lp_solve(far);
+    double ac = bl_lp_primal(cold)[s->nforce];
+    print_message("# far warm start: status %d, alpha %.10f in %d iterations; cold %.10f in %d\n", st,
+                  st == BL_LP_OPTIMAL ? bl_lp_primal(far)[s->nforce] : NAN, bl_lp_iterations(far), ac,
+                  bl_lp_iterations(cold));
+    assert_int_equal(st, BL_LP_OPTIMAL);
+    assert_true(fabs(bl_lp_primal(far)[s->nforce] - ac) <= 1e-7 * ac);
+    assert_true(bl_lp_iterations(far) <= bl_lp_iterations(cold) + 11);
+    bl_lp_free(cold);
+    bl_lp_free(far);
+    free(x);
+    free(zl);
+    free(zu);
+    bl_system_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -221,6 +261,7 @@ int main(void)
         cmocka_unit_test(interior_point),
         cmocka_unit_test(early_ray),
         cmocka_unit_test(rewind_solve),
+        cmocka_unit_test(far_warm),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
