@@ -659,13 +659,15 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     const char *start_kind = o->start == BL_MPEC_START_COLD    ? "cold"
                              : o->start == BL_MPEC_START_ASSOC ? "assoc"
                                                                : "seqlp";
-    if (o->start == BL_MPEC_START_SEQLP && !s->x && s->status != BL_INTERRUPTED) {
+    if (o->start == BL_MPEC_START_SEQLP && !s->x && s->status != BL_INTERRUPTED && !s->interrupted) {
         /* no certified answer to start from: the associative one */
         bl_solution_free(s);
         if (bl_assoc_solve(m, &o->seq.base, &s, err)) return -1;
         start_kind = "assoc (the sequence of LPs did not certify)";
     }
-    if (s->status == BL_INTERRUPTED) {
+    /* Ctrl-C during the start: its result is the answer (a sequence
+     * stopped by it keeps what it certified, and says so) */
+    if (s->status == BL_INTERRUPTED || s->interrupted) {
         *out = s;
         return 0;
     }

@@ -121,6 +121,21 @@ LUA
   check "last() keeps the certified answer of the interrupted sequence (W4 alpha <= 0.26379)" \
     grep -qE 'kept[[:space:]]+true[[:space:]]+true[[:space:]]+true[[:space:]]+true[[:space:]]+true[[:space:]]+true' <<<"$screen"
 
+  # Ctrl-C during the sequence of LPs that starts Ipopt (method "mpec"):
+  # Ipopt does not run, and the sequence's certified answer is kept.
+  tmux new-session -d -s "$s" -x 200 -y 30 "HOME=$tmp $bin -i $tmp/w4.lua"
+  sleep 1
+  tmux send-keys -t "$s" "r = solve{ method = 'mpec', starts = 1000000 }" Enter
+  sleep 2
+  tmux send-keys -t "$s" C-c
+  sleep 1.5
+  tmux send-keys -t "$s" 'l = last(); print("kept", r == nil, l.method, l.interrupted, l.certified, l.alpha <= 0.26379)' Enter
+  sleep 1
+  screen=$(tmux capture-pane -p -t "$s")
+  tmux kill-session -t "$s" 2>/dev/null
+  check "Ctrl-C during the sequence that starts Ipopt keeps the sequence's certified answer" \
+    grep -qE 'kept[[:space:]]+true[[:space:]]+seqlp[[:space:]]+true[[:space:]]+true[[:space:]]+true' <<<"$screen"
+
   # Ctrl-C during the path that starts the sequence of LPs (a 3,630-block
   # wall, where the path runs for seconds before the associative LP): the
   # whole solve stops, not just the path.
