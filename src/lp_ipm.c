@@ -694,12 +694,12 @@ static bl_lp_status solve(void *e)
         }
         /* A warm start that does not take: its largest residual not halved
          * (nor within the tolerance) in WARM_PATIENCE iterations.  The
-         * solve starts again from
-         * Mehrotra's point.  A certificate of the 10,050-block wall's
-         * sequence, its slip threshold divided by 10, started from the
-         * kept point of the certificate before it with a primal residual
-         * of 120 and mu 1e-7, and its steps stayed below 10^-2 until the
-         * limit of 200 iterations (doc/seqlp.md 12; tests/test_warm.c). */
+         * solve starts again from Mehrotra's point.  A certificate of the
+         * 10,050-block wall's sequence, its slip threshold divided by 10,
+         * started from the kept point of the certificate before it with a
+         * primal residual of 120 and mu 1e-7, and its steps stayed below
+         * 10^-2 until the limit of 200 iterations (doc/seqlp.md 12;
+         * tests/test_warm.c). */
         if (warm) {
             double r = fmax(fmax(ep, eu), ed);
             if (it == 0) warm_r = r;
