@@ -1177,8 +1177,8 @@ static int model_solve(lua_State *L)
         if (s->certified)
             return fail(L, "solve: interrupted (Ctrl-C) after %d LPs; the lowest certified alpha "
                            "so far, %.6g, is in last()", s->lps, s->alpha);
-        return fail(L, "solve: interrupted (Ctrl-C) after %d LPs, nothing certified yet; "
-                       "the history is in last()", s->lps);
+        return fail(L, "solve: interrupted (Ctrl-C) after %d LP%s, nothing certified yet; "
+                       "the history is in last()", s->lps, s->lps == 1 ? "" : "s");
     }
     return 1;
 }

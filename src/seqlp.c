@@ -1114,13 +1114,14 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         s->interrupted = 1;
         const char *what = r.found ? "the lowest certified answer so far; lower ones may exist"
                                    : "nothing certified yet";
+        const char *lps = s->lps == 1 ? "" : "s";
         if (s->start[s->nstarts - 1].continues)
             snprintf(s->note, sizeof s->note,
-                     "stopped by Ctrl-C after %d LPs, in start 1 going on after the restarts: %s",
-                     s->lps, what);
+                     "stopped by Ctrl-C after %d LP%s, in start 1 going on after the restarts: %s",
+                     s->lps, lps, what);
         else
-            snprintf(s->note, sizeof s->note, "stopped by Ctrl-C after %d LPs, in start %d of %d: %s",
-                     s->lps, s->nstarts, starts + 1, what);
+            snprintf(s->note, sizeof s->note, "stopped by Ctrl-C after %d LP%s, in start %d of %d: %s",
+                     s->lps, lps, s->nstarts, starts + 1, what);
     }
     if (r.found) {
         s->alpha = r.best_alpha;
