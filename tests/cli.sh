@@ -66,19 +66,38 @@ fi
 
 # Ctrl-C during a long solve: the prompt comes back and the model is intact.
 if command -v tmux >/dev/null; then
-  cat > "$tmp/big.lua" <<'LUA'
+  # running_bond N: a script that builds a running-bond wall of N x N blocks
+  running_bond() {
+    cat <<LUA
 model { mu = 0.65 }
 local c = {}
-for i = 1, 100 do
+for i = 1, $1 do
   local row = i % 2 == 1 and { .5 } or {}
-  for _ = 1, 100 do row[#row + 1] = 1 end
+  for _ = 1, $1 do row[#row + 1] = 1 end
   if i % 2 == 1 then row[#row] = .5 end
   c[i] = row
 end
 wall { courses = c, unit = { 0.4, 0.175 } }
 LUA
+  }
+  running_bond 100 > "$tmp/big.lua"
   s="blocklim_cli_$$"
   tmux() { command tmux -L "$s" "$@"; }
+  # interrupt SCRIPT COMMAND WAIT PROBE: at the prompt with SCRIPT loaded,
+  # type COMMAND, press Ctrl-C WAIT seconds later, then type PROBE; the
+  # screen is left in $screen
+  interrupt() {
+    tmux new-session -d -s "$s" -x 200 -y 30 "HOME=$tmp $bin -i $1"
+    sleep 1
+    tmux send-keys -t "$s" "$2" Enter
+    sleep "$3"
+    tmux send-keys -t "$s" C-c
+    sleep 1.5
+    tmux send-keys -t "$s" "$4" Enter
+    sleep 1
+    screen=$(tmux capture-pane -p -t "$s")
+    tmux kill-session -t "$s" 2>/dev/null
+  }
   tmux new-session -d -s "$s" -x 120 -y 30 "HOME=$tmp $bin -i $tmp/big.lua"
   sleep 1
   for lp in simplex ipm; do
@@ -106,16 +125,8 @@ local E, U = { .5, 1, 1, 1, 1, .5 }, { 1, 1, 1, 1, 1 }
 local Wu, We = { 1, -1, 1, -1, 1 }, { .5, .5, -1, .5, .5, -1, .5, .5 }
 wall { courses = { E, U, E, Wu, We, Wu, We, Wu, E, U, E }, unit = { 0.4, 0.175 } }
 LUA
-  tmux new-session -d -s "$s" -x 200 -y 30 "HOME=$tmp $bin -i $tmp/w4.lua"
-  sleep 1
-  tmux send-keys -t "$s" "r = solve{ flow = 'nonassociative', starts = 1000000 }" Enter
-  sleep 2
-  tmux send-keys -t "$s" C-c
-  sleep 1.5
-  tmux send-keys -t "$s" 'l = last(); print("kept", r == nil, l.interrupted, l.certified, l.verified, l.alpha <= 0.26379, l.lps > 20)' Enter
-  sleep 1
-  screen=$(tmux capture-pane -p -t "$s")
-  tmux kill-session -t "$s" 2>/dev/null
+  interrupt "$tmp/w4.lua" "r = solve{ flow = 'nonassociative', starts = 1000000 }" 2 \
+    'l = last(); print("kept", r == nil, l.interrupted, l.certified, l.verified, l.alpha <= 0.26379, l.lps > 20)'
   check "Ctrl-C stops a sequence of LPs and says where its answer is" \
     grep -q 'lowest certified alpha so far, 0.263.*is in last()' <<<"$screen"
   check "last() keeps the certified answer of the interrupted sequence (W4 alpha <= 0.26379)" \
@@ -123,16 +134,8 @@ LUA
 
   # Ctrl-C during the sequence of LPs that starts Ipopt (method "mpec"):
   # Ipopt does not run, and the sequence's certified answer is kept.
-  tmux new-session -d -s "$s" -x 200 -y 30 "HOME=$tmp $bin -i $tmp/w4.lua"
-  sleep 1
-  tmux send-keys -t "$s" "r = solve{ method = 'mpec', starts = 1000000 }" Enter
-  sleep 2
-  tmux send-keys -t "$s" C-c
-  sleep 1.5
-  tmux send-keys -t "$s" 'l = last(); print("kept", r == nil, l.method, l.interrupted, l.certified, l.alpha <= 0.26379)' Enter
-  sleep 1
-  screen=$(tmux capture-pane -p -t "$s")
-  tmux kill-session -t "$s" 2>/dev/null
+  interrupt "$tmp/w4.lua" "r = solve{ method = 'mpec', starts = 1000000 }" 2 \
+    'l = last(); print("kept", r == nil, l.method, l.interrupted, l.certified, l.alpha <= 0.26379)'
   check "Ctrl-C during the sequence that starts Ipopt keeps the sequence's certified answer" \
     grep -qE 'kept[[:space:]]+true[[:space:]]+seqlp[[:space:]]+true[[:space:]]+true[[:space:]]+true' <<<"$screen"
 
@@ -140,27 +143,9 @@ LUA
   # wall, where the path runs for seconds beside the associative LP): the
   # whole solve stops, not just the path; before the associative LP has
   # finished, or right after it with nothing certified.
-  cat > "$tmp/rb60.lua" <<'LUA'
-model { mu = 0.65 }
-local c = {}
-for i = 1, 60 do
-  local row = i % 2 == 1 and { .5 } or {}
-  for _ = 1, 60 do row[#row + 1] = 1 end
-  if i % 2 == 1 then row[#row] = .5 end
-  c[i] = row
-end
-wall { courses = c, unit = { 0.4, 0.175 } }
-LUA
-  tmux new-session -d -s "$s" -x 200 -y 30 "HOME=$tmp $bin -i $tmp/rb60.lua"
-  sleep 1
-  tmux send-keys -t "$s" "t0 = blocklim.clock(); r = solve{}" Enter
-  sleep 1.5
-  tmux send-keys -t "$s" C-c
-  sleep 1.5
-  tmux send-keys -t "$s" 'print("path stopped", blocklim.clock() - t0 < 4.5, r == nil)' Enter
-  sleep 1
-  screen=$(tmux capture-pane -p -t "$s")
-  tmux kill-session -t "$s" 2>/dev/null
+  running_bond 60 > "$tmp/rb60.lua"
+  interrupt "$tmp/rb60.lua" "t0 = blocklim.clock(); r = solve{}" 1.5 \
+    'print("path stopped", blocklim.clock() - t0 < 4.5, r == nil)'
   check "Ctrl-C during the path of the sequence stops the whole solve" \
     grep -qE 'solve: interrupted \(Ctrl-C\)(; the model is as it was| after [0-9]+ LPs?, nothing certified yet)' <<<"$screen"
   check "... and returns to the prompt at once" \
