@@ -202,22 +202,40 @@ for _, seed in ipairs { 1, 4, 7, 11, 18 } do
 end
 T.ok(#bad == 0, ("%d random walls at three mu: certified, verified, not above the associative alpha"):format(all),
      table.concat(bad, " "))
--- The nearest forces after failed certificates (BL_SEQLP_NEAREST): random
--- wall 8 at mu = 1 on the interior point fails two certificates and
--- passes the third, so by default (after the third failure) no nearest
--- step is taken; with nearest = 1 one follows the first failure.  Either
--- way the answer must solve Eq. 12 (verified) below the associative one.
+-- The nearest forces after failed certificates (BL_SEQLP_NEAREST): a start
+-- that fails one or two certificates and passes the next takes, by
+-- default (after the third failure), no nearest step; with nearest = 1 one
+-- follows the first failure.  Which walls fail a certificate first is a
+-- draw of the round-off (random wall 8 at mu = 1 did with one backward
+-- solve, random wall 6 with another), so the test takes every such wall
+-- among the first 30 random ones at mu = 1, on the interior point, and
+-- needs at least one.  Either way the answer must solve Eq. 12 (verified)
+-- below the associative one.
 do
-  model { mu = 1.0 }
-  wall { courses = walls.random(8), unit = { 0.4, 0.175 } }
-  local d = solve { flow = "nonassociative", starts = 0, lp = "ipm", path = false }
-  local n = solve { flow = "nonassociative", starts = 0, lp = "ipm", nearest = 1, path = false }
-  T.eq(d.starts[1].nearest, 0, "nearest forces: none by default where the third certificate passes")
-  T.ok(n.starts[1].nearest >= 1 and n.starts[1].certificates >= 2,
-       "nearest = 1: a nearest step after the first failed certificate",
-       ("%d steps, %d certificates"):format(n.starts[1].nearest, n.starts[1].certificates))
-  T.ok(n.certified and n.verified and n.alpha <= n.alpha_assoc * (1 + 1e-9),
-       ("nearest = 1: certified, verified, alpha %.5f <= associative %.5f"):format(n.alpha, n.alpha_assoc))
+  local tried, bad = 0, {}
+  for k = 1, 30 do
+    model { mu = 1.0 }
+    wall { courses = walls.random(k), unit = { 0.4, 0.175 } }
+    local d = solve { flow = "nonassociative", starts = 0, lp = "ipm", path = false, progress = false }
+    if d.starts[1].certificates >= 2 and d.starts[1].certificates <= 3 then
+      tried = tried + 1
+      if d.starts[1].nearest ~= 0 then bad[#bad + 1] = ("wall %d: a nearest step by default"):format(k) end
+      local n = solve { flow = "nonassociative", starts = 0, lp = "ipm", nearest = 1, path = false,
+                        progress = false }
+      if not (n.starts[1].nearest >= 1 and n.starts[1].certificates >= 2) then
+        bad[#bad + 1] = ("wall %d: %d nearest steps, %d certificates"):format(k, n.starts[1].nearest,
+                                                                             n.starts[1].certificates)
+      end
+      if not (n.certified and n.verified and n.alpha <= n.alpha_assoc * (1 + 1e-9)) then
+        bad[#bad + 1] = ("wall %d: %s, alpha %.5f, associative %.5f"):format(k, n.status, n.alpha, n.alpha_assoc)
+      end
+    end
+  end
+  T.ok(tried >= 1, "nearest forces: some random wall at mu = 1 fails its first certificate",
+       ("%d of 30"):format(tried))
+  T.ok(#bad == 0, ("nearest = 1 on %d walls: a nearest step after the first failed certificate, "
+                   .. "certified, verified, not above the associative alpha"):format(tried),
+       table.concat(bad, "; "))
 end
 -- cohesion: W4 0.2 thick with cohesion 0.02 and 0.05 certifies on both
 -- engines, below its associative alpha, which cohesion raises above the
