@@ -326,28 +326,30 @@ static bl_lp_status certificate(run *r, double alpha, const double *y,
  * slip just below the threshold that its forces work against: a random
  * wall of the tests at mu = 1, work residual 1.5e-4), the certificate is
  * tried again with slip / 10 and slip / 100, and the first that passes is
- * the answer; if none does, the default's (doc/seqlp.md 12).  Returns the
- * LP status, with the certified alpha in *cert and the forces in r->xc. */
+ * the answer; if none does, the default's, kept from its solve
+ * (doc/seqlp.md 12).  Returns the LP status, with the certified alpha in
+ * *cert and the forces in r->xc. */
 static bl_lp_status certify(run *r, double alpha, const double *y, const bl_seqlp_options *so,
                             bl_solution *s, double *cert, bl_error *err)
 {
     int ok;
-    double used = so->slip;
-    certificate_bounds(r, y, used);
+    size_t nc = (size_t)r->cone->ncols;
+    certificate_bounds(r, y, so->slip);
     bl_lp_status st = certificate(r, alpha, y, so, s, cert, &ok, err);
+    if (st == BL_LP_OPTIMAL) memcpy(r->xc, bl_lp_primal(r->lp_cone), nc * sizeof *r->xc);
+    double first = *cert;
     static const double finer[] = {0.1, 0.01};
-    for (int k = 0; st == BL_LP_OPTIMAL && !ok && k < 3; k++) {
-        used = k < 2 ? finer[k] * so->slip : so->slip; /* last: the default's answer */
-        certificate_bounds(r, y, used);
+    for (int k = 0; st == BL_LP_OPTIMAL && !ok && k < 2; k++) {
+        certificate_bounds(r, y, finer[k] * so->slip);
         bl_lp_status sf = certificate(r, alpha, y, so, s, cert, &ok, err);
         if (sf == BL_LP_FAILED && !r->lp_cone) return sf;
-        if (k == 2 || (sf == BL_LP_OPTIMAL && ok)) st = sf;
+        if (sf == BL_LP_OPTIMAL && ok) memcpy(r->xc, bl_lp_primal(r->lp_cone), nc * sizeof *r->xc);
     }
+    if (st == BL_LP_OPTIMAL && !ok) *cert = first; /* the default's, its forces in r->xc */
     /* a certificate the interior point cannot finish decides nothing:
      * it counts as failed, and the sequence goes on */
     if ((st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) && r->lp_cone) return BL_LP_INFEASIBLE;
     if (st != BL_LP_OPTIMAL) return st;
-    memcpy(r->xc, bl_lp_primal(r->lp_cone), (size_t)r->cone->ncols * sizeof *r->xc);
     if (ok && *cert != alpha) return st;
     /* Verified only at the LP's alpha, or not at all: the lowest alpha
      * leaned on motions taken as none (lean_work).  The lowest alpha with a
@@ -356,7 +358,7 @@ static bl_lp_status certify(run *r, double alpha, const double *y, const bl_seql
      * (the 4,935-block wall: 0.42272 at rho = 100 against 0.43178 at the
      * LP's alpha; in 3D 0.41994 against 0.42998, doc/seqlp.md 12). */
     for (double rho = 10.0; rho <= 1000.0; rho *= 10.0) {
-        certificate_bounds(r, y, used);
+        certificate_bounds(r, y, so->slip);
         bl_lp_status sl = certificate_lp(r, &so->base, rho, s, err);
         if (sl == BL_LP_FAILED && !r->lp_cone) return sl;
         if (sl != BL_LP_OPTIMAL) break;
@@ -368,7 +370,7 @@ static bl_lp_status certify(run *r, double alpha, const double *y, const bl_seql
         if (!pass) continue;
         if (al < alpha || !ok) {
             *cert = al;
-            memcpy(r->xc, bl_lp_primal(r->lp_cone), (size_t)r->cone->ncols * sizeof *r->xc);
+            memcpy(r->xc, bl_lp_primal(r->lp_cone), nc * sizeof *r->xc);
         }
         break;
     }
