@@ -21,6 +21,7 @@ void bl_solve_options_default(bl_solve_options *o)
     o->cone = (bl_cone){.facets = 8};
     o->early_infeasible = 0;
     o->lp_tolerance = 0;
+    o->weighted = 1;
 }
 
 bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const double *obj,
@@ -35,6 +36,7 @@ bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const
     ls.threads = o->threads;
     ls.early_infeasible = o->early_infeasible;
     ls.tolerance = o->lp_tolerance;
+    ls.weighted = o->weighted;
     bl_lp_problem p = {s->nrows, s->ncols, s->colptr, s->rowind, s->val,
                        lo,       hi,       s->rhs,    obj ? obj : s->obj};
     return bl_lp_create(&p, &ls, err);

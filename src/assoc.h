@@ -26,6 +26,9 @@ typedef struct bl_solve_options {
     double lp_tolerance;  /* the LP engine's stopping tolerance, 0: its
                              default (lp.h: 1e-8 for the interior point,
                              1e-9 for the simplex) */
+    int weighted;       /* the interior point's weighted path (lp.h); the
+                           sequence of LPs and the direct solve leave it
+                           off for their own LPs and their start */
 } bl_solve_options;
 
 void bl_solve_options_default(bl_solve_options *o);

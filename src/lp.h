@@ -66,6 +66,8 @@ typedef struct bl_lp_settings {
                              proves any equilibrium would need ten times
                              the path's forces (lp_ipm.c, ray_test): for
                              LPs whose "infeasible" only means "go on" */
+    int weighted;        /* ipm: the weighted central path (lp_ipm.c,
+                             path_weights); 0: the analytic centre's */
 } bl_lp_settings;
 
 void bl_lp_settings_default(bl_lp_settings *s);

@@ -947,6 +947,13 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     bl_seqlp_options own = *o;
     int ra, rb;
     if (bl_model_uses_resultant(m, &ra, &rb) && own.base.lp == BL_LP_AUTO) own.base.lp = BL_LP_IPM;
+    /* Every LP of the sequence, its associative start included, ends at
+     * the analytic centre of its optimal face: which solution of Eq. 12 a
+     * start reaches depends on where it begins (doc/seqlp.md 5), and from
+     * the weighted centres (lp.h) two of the six domes of
+     * `ensemble.lua domes` did not certify in five starts, and the
+     * 10,050-block wall took 106 or 150 LPs instead of 86. */
+    own.base.weighted = 0;
     o = &own;
     /* (3D: the associative start on the sequence's own pyramid) */
     bl_solve_options base = o->base;

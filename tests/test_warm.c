@@ -11,7 +11,9 @@
  * A warm start far off (far_warm) falls back to a cold start.
  * Rewinding (bl_lp_mark, bl_lp_rewind): a solve taken back leaves no trace
  * on the next one, whose iterations and answer are those of the same two
- * solves made without it, to the last bit. */
+ * solves made without it, to the last bit.
+ * The weighted path (settings.weighted) ends at another point of the
+ * optimal face, with the simplex's alpha. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -254,6 +256,40 @@ static void far_warm(void **state)
     bl_system_free(s);
 }
 
+static void weighted_path(void **state)
+{
+    (void)state;
+    bl_system *s = w4(BL_FRICTION_CONE);
+    bl_lp *sx = make(s, s->lo, BL_LP_SIMPLEX);
+    assert_int_equal(bl_lp_solve(sx), BL_LP_OPTIMAL);
+    double as = bl_lp_primal(sx)[s->nforce];
+    const double *x[2];
+    bl_lp *lp[2];
+    for (int weighted = 0; weighted <= 1; weighted++) {
+        bl_lp_problem p = {s->nrows, s->ncols, s->colptr, s->rowind, s->val,
+                           s->lo,    s->hi,    s->rhs,    s->obj};
+        bl_lp_settings set;
+        bl_lp_settings_default(&set);
+        set.engine = BL_LP_IPM;
+        set.weighted = weighted;
+        lp[weighted] = bl_lp_create(&p, &set, NULL);
+        assert_non_null(lp[weighted]);
+        assert_int_equal(bl_lp_solve(lp[weighted]), BL_LP_OPTIMAL);
+        x[weighted] = bl_lp_primal(lp[weighted]);
+    }
+    double dmax = 0.0;
+    for (int j = 0; j < s->nforce; j++) dmax = fmax(dmax, fabs(x[1][j] - x[0][j]));
+    print_message("# alpha simplex %.10f, analytic centre %.10f (%d iterations), weighted %.10f "
+                  "(%d); forces apart by up to %.3g W0\n",
+                  as, x[0][s->nforce], bl_lp_iterations(lp[0]), x[1][s->nforce],
+                  bl_lp_iterations(lp[1]), dmax);
+    for (int k = 0; k < 2; k++) assert_true(fabs(x[k][s->nforce] - as) <= 1e-8 * as);
+    assert_true(dmax > 1e-4); /* the two paths end apart */
+    for (int k = 0; k < 2; k++) bl_lp_free(lp[k]);
+    bl_lp_free(sx);
+    bl_system_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -262,6 +298,7 @@ int main(void)
         cmocka_unit_test(early_ray),
         cmocka_unit_test(rewind_solve),
         cmocka_unit_test(far_warm),
+        cmocka_unit_test(weighted_path),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
