@@ -12,7 +12,9 @@
  *     with one extra right-hand side per factorization;
  *   - the normal matrix M = F F^T + delta I, F = A Theta^(1/2), is factored
  *     by CHOLMOD (normal.h): analysed once, refactored numerically every
- *     iteration, in two domains on two threads when it is large.
+ *     iteration, in two domains on two threads when it is large;
+ *   - the iterates follow a central path weighted by the scale of the
+ *     forces (path_weights), unless settings.weighted is 0.
  */
 #include <math.h>
 #include <stdio.h>
@@ -892,7 +894,8 @@ static bl_lp_status solve(void *e)
         mu_aff /= p->wsum;
         double sigma = fmin(pow(mu_aff / mu, 3.0), 1.0);
 
-        /* Mehrotra's corrector: centring plus the predictor's second-order term */
+        /* Mehrotra's corrector: centring (on the weighted path) plus the
+         * predictor's second-order term */
         PAR_FOR
         for (int j = 0; j < n; j++) {
             double wj = weight(p, j);
@@ -907,7 +910,7 @@ static bl_lp_status solve(void *e)
         td = max_step(p, p->z, d->z, p->w, d->w);
 
         /* Gondzio's correctors: push the products of the trial point at a
-         * step longer by 0.2 back into [0.1, 10] sigma mu, and keep the
+         * step longer by 0.2 back into [0.1, 10] sigma mu w_j, and keep the
          * correction while it lengthens the step.  Up to 10: a corrector
          * costs one solve, about 1/18 of a factorization, and most
          * iterations stop on their own after 1-5.  With the neighbourhood
@@ -956,7 +959,7 @@ static bl_lp_status solve(void *e)
         tp = fmin(1.0, 0.99 * max_step(p, p->x, d->x, p->s, d->s));
         td = fmin(1.0, 0.99 * max_step(p, p->z, d->z, p->w, d->w));
         /* Neighbourhood safeguard: shorten both steps until every product
-         * is at least 0.01 of their mean.  A pair left at 1 % of its value
+         * is at least 0.01 mu w_j (mu the weighted mean).  A pair left at 1 % of its value
          * by the 0.99 rule blocks the following steps; 0.01 is the value
          * that helped at every size (0.1 and 0.02 cost iterations, and an
          * upper bound on the products, which grow on columns that change
