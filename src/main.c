@@ -6,6 +6,7 @@
  * the REPL uses GNU readline (history, completion of Lua names); on a pipe it
  * reads lines with stdio and keeps the same chunk semantics, so a model can
  * be fed to it line by line. */
+#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -444,15 +445,36 @@ static char **complete(const char *text, int start, int end)
 
 /* ---- the REPL ---------------------------------------------------------- */
 
-/* Ctrl-C while a line is being typed abandons that line and shows a fresh
- * prompt, as shells do; it does not end the session. */
+/* Set by Ctrl-C at the prompt: the chunk being typed is dropped. */
+static volatile sig_atomic_t input_cancelled;
+
+/* Ctrl-C while a line is being typed abandons it, and with it the lines
+ * of an unfinished chunk before it, and shows a fresh prompt, as shells
+ * do; it does not end the session.  Readline hands the signal on to this
+ * handler after its own clean-up (it echoes ^C), from read_key. */
 static void on_idle_sigint(int sig)
 {
     (void)sig;
-    (void)!write(STDOUT_FILENO, "\n", 1);
-    rl_on_new_line();
+    input_cancelled = 1;
     rl_replace_line("", 0);
-    rl_redisplay();
+}
+
+/* Readline's key reader: as rl_getc, but a read interrupted by Ctrl-C
+ * ends the line at once (an empty line, which read_chunk drops), where
+ * rl_getc would wait for the next key. */
+static int read_key(FILE *stream)
+{
+    for (;;) {
+        unsigned char c;
+        ssize_t r = read(fileno(stream), &c, 1);
+        if (r == 1)
+            return c;
+        if (r == 0 || errno != EINTR)
+            return EOF;
+        rl_check_signals();   /* readline's handling, then ours */
+        if (input_cancelled)
+            return '\n';
+    }
 }
 
 /* Returns the next input line without its newline (malloc'd), or NULL at
@@ -518,11 +540,18 @@ static int compile_as_return(lua_State *L)
  * pushed, at end of input. */
 static int read_chunk(lua_State *L, int interactive)
 {
-    char *line = read_line(interactive, 1);
+    char *line;
     int status;
 
+again:
+    input_cancelled = 0;
+    line = read_line(interactive, 1);
     if (line == NULL)
         return CHUNK_EOF;
+    if (input_cancelled) {
+        free(line);
+        goto again;
+    }
     if (line[0] == '=')   /* "=expr", as in Lua 5.1-5.3 */
         lua_pushfstring(L, "return %s", line + 1);
     else
@@ -540,6 +569,11 @@ static int read_chunk(lua_State *L, int interactive)
                 (line = read_line(interactive, 0)) == NULL)
                 break;   /* done, or input ended inside the chunk */
             lua_pop(L, 1);
+            if (input_cancelled) {   /* the unfinished chunk is dropped */
+                free(line);
+                lua_pop(L, 1);
+                goto again;
+            }
             lua_pushliteral(L, "\n");
             lua_pushstring(L, line);
             free(line);
@@ -581,6 +615,7 @@ static void setup_readline(void)
     /* '.' and ':' are not breaks, so "string.fo" is one word to complete. */
     rl_basic_word_break_characters = " \t\n\"'`\\<>=;+-*/%^~#&|,()[]{}";
     rl_attempted_completion_function = complete;
+    rl_getc_function = read_key;
     history_open();
 }
 

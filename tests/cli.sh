@@ -110,12 +110,24 @@ LUA
   sleep 0.5
   tmux send-keys -t "$s" 'print("blocks", stats().blocks)' Enter
   sleep 1
+  # Ctrl-C at the continuation prompt drops the unfinished chunk: the
+  # next line is a chunk of its own (else "for" would swallow it)
+  tmux send-keys -t "$s" 'for i = 1, 2 do' Enter
+  sleep 0.3
+  tmux send-keys -t "$s" 'print("inside", i)' Enter
+  sleep 0.3
+  tmux send-keys -t "$s" C-c
+  sleep 0.5
+  tmux send-keys -t "$s" 'print("after", 1 + 1)' Enter
+  sleep 1
   screen=$(tmux capture-pane -p -t "$s")
   tmux kill-session -t "$s" 2>/dev/null
   check "Ctrl-C stops a solve by either engine and returns to the prompt" \
     test "$(grep -c 'solve: interrupted' <<<"$screen")" -eq 2
   check "the model is intact after Ctrl-C, and Ctrl-C on a typed line keeps the session" \
     grep -qE 'blocks[[:space:]]+10050' <<<"$screen"
+  check "Ctrl-C at the continuation prompt drops the unfinished chunk" \
+    bash -c 'grep -qE "^after[[:space:]]+2" <<<"$1" && ! grep -qE "^inside" <<<"$1"' _ "$screen"
 
   # Ctrl-C during a long sequence of LPs (W4 with very many restarts): the
   # chunk stops, and the lowest certified answer so far is kept in last().
