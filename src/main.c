@@ -7,6 +7,7 @@
  * reads lines with stdio and keeps the same chunk semantics, so a model can
  * be fed to it line by line. */
 #include <errno.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -469,6 +470,13 @@ static int read_key(FILE *stream)
         ssize_t r = read(fileno(stream), &c, 1);
         if (r == 1)
             return c;
+        if (r < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+            /* a terminal left non-blocking by another program: block again */
+            int fl = fcntl(fileno(stream), F_GETFL, 0);
+            if (fl >= 0 && (fl & O_NONBLOCK) &&
+                fcntl(fileno(stream), F_SETFL, fl & ~O_NONBLOCK) == 0)
+                continue;
+        }
         if (r == 0 || errno != EINTR)
             return EOF;
         rl_check_signals();   /* readline's handling, then ours */
