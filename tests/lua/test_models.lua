@@ -6,11 +6,14 @@ local dir = arg[0]:match("^(.-)tests/lua/[^/]*$") or "../../"
 local tmp = os.getenv("TMPDIR") or "/tmp"
 
 local expected = {
-  w1 = 0.64286, w4 = 0.26374, w5 = 0.23964, block = 0.4,
+  w1 = 0.64286, w4 = 0.26374, block = 0.4,
   w4_3d = 0.33195, w5_3d = 0.23964, -- one block thick, loaded in their plane
 }
--- models/w4.lua solves for non-dilatant joints: its associative alpha too
-local expected_assoc = { w4 = 0.33195 }
+-- models/w4.lua and w5.lua solve for non-dilatant joints: their
+-- associative alphas too, and W5's non-associative one within the
+-- published answers (0.20863 Ferris & Tin-Loi, 0.21964 the seed)
+local expected_assoc = { w4 = 0.33195, w5 = 0.23964 }
+local expected_band = { w5 = { 0.2086, 0.2197 } }
 local results = {}
 -- the scripts' printed results as TAP comments
 local print_tap = print
@@ -30,6 +33,11 @@ for _, name in ipairs { "w1", "w4", "w5", "block", "arch", "facade", "vault", "d
   T.ok(r.verified, name .. ": verified")
   if expected[name] then
     T.near(r.alpha, expected[name], 0.5e-5 / expected[name], name .. ": alpha as published")
+  end
+  local band = expected_band[name]
+  if band then
+    T.ok(r.alpha >= band[1] and r.alpha <= band[2],
+         ("%s: alpha within the published [%g, %g]"):format(name, band[1], band[2]), tostring(r.alpha))
   end
   if expected_assoc[name] then
     T.ok(r.certified, name .. ": certified")
@@ -51,5 +59,5 @@ T.ok(results.dome.cone.kind == "adaptive" and results.dome.cone.rounds > 1, "dom
 T.ok(results.corner.alpha >= 0.2 / 1.6, "corner: the return panel helps (alpha >= t/h = 0.125)",
      tostring(results.corner.alpha))
 T.near(results.w4_3d.alpha, results.w4.alpha_assoc, 1e-6, "W4 in 3D: the 2D wall's associative alpha to 1e-6")
-T.near(results.w5_3d.alpha, results.w5.alpha, 1e-6, "W5 in 3D: the 2D wall's alpha to 1e-6")
+T.near(results.w5_3d.alpha, results.w5.alpha_assoc, 1e-6, "W5 in 3D: the 2D wall's associative alpha to 1e-6")
 T.done()
