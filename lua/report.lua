@@ -91,13 +91,19 @@ function Result.__tostring(r)
   out[#out + 1] = line
   if r.residuals then
     local e = r.residuals
-    say("  residuals (scaled, tolerance %s): equilibrium %s, yield %s, admissibility %s,",
-        g(r.tolerance), g(e.equilibrium), g(e.yield), g(e.admissibility))
-    say("    complementarity %s, normalization %s, work %s", g(e.complementarity),
-        g(e.normalization), g(e.work))
     if e.flow then
-      say("    flow %s, dilatancy %s (flow-rule residuals judged against the slip threshold %s)",
-          g(e.flow), g(e.dilatancy), g(r.slip))
+      -- the flow rule's residuals are judged against the slip threshold
+      -- (doc/theory.md 6, "Verification of a non-associative answer")
+      say("  residuals (scaled, tolerance %s): equilibrium %s, yield %s, admissibility %s,",
+          g(r.tolerance), g(e.equilibrium), g(e.yield), g(e.admissibility))
+      say("    normalization %s; the flow rule's (slip threshold %s): complementarity %s,",
+          g(e.normalization), g(r.slip), g(e.complementarity))
+      say("    work %s, flow %s, dilatancy %s", g(e.work), g(e.flow), g(e.dilatancy))
+    else
+      say("  residuals (scaled, tolerance %s): equilibrium %s, yield %s, admissibility %s,",
+          g(r.tolerance), g(e.equilibrium), g(e.yield), g(e.admissibility))
+      say("    complementarity %s, normalization %s, work %s", g(e.complementarity),
+          g(e.normalization), g(e.work))
     end
   end
   local t = r.timings
