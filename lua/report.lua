@@ -66,6 +66,27 @@ function Result.__tostring(r)
       end
     end
   end
+  if r.alpha_assoc and not r.certified and r.history then
+    -- where each start stopped (a start that went on after the restarts
+    -- stopped at the end of its continuation): indicative only, since an
+    -- LP with fixed capacities bounds nothing (doc/theory.md 6)
+    local last = {}
+    for k, st in ipairs(r.starts) do
+      local h = r.history[k]
+      if #h > 1 then last[st.continues or k] = h[#h] end
+    end
+    local stops = {}
+    for k = 1, #r.starts do
+      if last[k] then stops[#stops + 1] = ("%.6g"):format(last[k]) end
+    end
+    if #stops > 0 then
+      say("  where %s stopped, an LP of fixed capacities, which bounds nothing:",
+          #stops == 1 and "the sequence" or "each start")
+      for i = 1, #stops, 6 do
+        say("  %s %s", i == 1 and "alpha" or "     ", table.concat(stops, ", ", i, math.min(i + 5, #stops)))
+      end
+    end
+  end
   if r.ipopt then
     local i = r.ipopt
     say("  %s flow, mpec method: Ipopt %s after %d iterations, %d constraints x %d variables",

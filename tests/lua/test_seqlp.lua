@@ -53,6 +53,18 @@ T.ok(ok and r.status == "not certified" and lps == r.lps - 2 and its > 0
      and r.iterations - its > assoc_its,
      "W4, lps = 3, default: 3 more starts while none certifies, then start 1 goes on for 3 "
      .. "more, the starts' LPs adding up", ("%d starts, %d of %d LPs"):format(#r.starts, lps, r.lps))
+-- print(r) of an uncertified result says where each start stopped: start 1
+-- at the end of its continuation (history[5]), the others at their own
+-- last LP, in the order of the starts.
+local shown = tostring(r):match("which bounds nothing:\n%s*alpha ([^\n]*)")
+local want = {}
+for k = 1, 4 do
+  local h = r.history[k == 1 and 5 or k]
+  want[k] = ("%.6g"):format(h[#h])
+end
+T.ok(shown == table.concat(want, ", "),
+     "W4, lps = 3: print(r) gives where each start stopped, start 1 after going on",
+     ("%s | %s"):format(tostring(shown), table.concat(want, ", ")))
 -- Going on where it stopped: the continuation begins at start 1's last
 -- alpha, and its first LP has the capacities of a single start's fourth
 -- (the same LP, hence the same optimal alpha, to 1e-9 relative).
