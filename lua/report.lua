@@ -83,7 +83,8 @@ function Result.__tostring(r)
       say("  where %s stopped, an LP of fixed capacities, which bounds nothing:",
           #stops == 1 and "the sequence" or "each start")
       for i = 1, #stops, 6 do
-        say("  %s %s", i == 1 and "alpha" or "     ", table.concat(stops, ", ", i, math.min(i + 5, #stops)))
+        say("  %s %s", i == 1 and "alpha" or "     ",
+            table.concat(stops, ", ", i, math.min(i + 5, #stops)))
       end
     end
   end
@@ -112,17 +113,15 @@ function Result.__tostring(r)
   out[#out + 1] = line
   if r.residuals then
     local e = r.residuals
+    say("  residuals (scaled, tolerance %s): equilibrium %s, yield %s, admissibility %s,",
+        g(r.tolerance), g(e.equilibrium), g(e.yield), g(e.admissibility))
     if e.flow then
       -- the flow rule's residuals are judged against the slip threshold
       -- (doc/theory.md 6, "Verification of a non-associative answer")
-      say("  residuals (scaled, tolerance %s): equilibrium %s, yield %s, admissibility %s,",
-          g(r.tolerance), g(e.equilibrium), g(e.yield), g(e.admissibility))
       say("    normalization %s; the flow rule's (slip threshold %s): complementarity %s,",
           g(e.normalization), g(r.slip), g(e.complementarity))
       say("    work %s, flow %s, dilatancy %s", g(e.work), g(e.flow), g(e.dilatancy))
     else
-      say("  residuals (scaled, tolerance %s): equilibrium %s, yield %s, admissibility %s,",
-          g(r.tolerance), g(e.equilibrium), g(e.yield), g(e.admissibility))
       say("    complementarity %s, normalization %s, work %s", g(e.complementarity),
           g(e.normalization), g(e.work))
     end
