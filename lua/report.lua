@@ -46,24 +46,24 @@ function Result.__tostring(r)
           r.alpha_settled, r.alpha)
       say("  at which forces fit it")
     end
+    local certified, went_on = 0, nil
+    for _, st in ipairs(r.starts) do
+      certified = certified + (st.certified and 1 or 0)
+      if st.continues then went_on = st end
+    end
+    local paths = #r.starts - (went_on and 1 or 0)
     if r.assoc_is_solution then
       say("  (with unlimited friction alpha is the same: the associative answer is itself a")
       say("  non-associative solution; starts = K looks for lower ones)")
-    elseif r.certified and #r.history == 1 then
+    elseif paths > 1 then
+      say("  (%d starts, each another path to a solution, %d certified%s)", paths, certified,
+          r.certified and "; alpha is the lowest" or "")
+    elseif r.certified then
       say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")
-    elseif #r.starts > 1 then
-      local certified, went_on = 0, nil
-      for _, st in ipairs(r.starts) do
-        certified = certified + (st.certified and 1 or 0)
-        if st.continues then went_on = st end
-      end
-      local paths = #r.starts - (went_on and 1 or 0)
-      say("  (%d start%s, each another path to a solution, %d certified%s)", paths,
-          paths == 1 and "" or "s", certified, r.certified and "; alpha is the lowest" or "")
-      if went_on then
-        say("  start %d, cut at its cap, went on for %d more fixed LPs%s", went_on.continues,
-            #r.history[#r.starts] - 1, went_on.certified and " and certified" or "")
-      end
+    end
+    if went_on then
+      say("  start %d, cut at its cap, went on for %d more fixed LPs%s", went_on.continues,
+          #r.history[#r.starts] - 1, went_on.certified and " and certified" or "")
     end
   end
   if r.alpha_assoc and not r.certified and r.history then
