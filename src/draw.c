@@ -44,6 +44,7 @@ typedef struct pic {
     double maxd;          /* largest vertex speed of the mechanism */
     double w, h;
     double unit;          /* line widths and text follow the picture width */
+    double mark;          /* the joints' markers: unit, less where blocks are drawn small */
     double sc, x0, y0;    /* model (x, y) -> canvas (x0 + sc x, y0 - sc y) */
     double top, dh;       /* drawing area, canvas units */
     double font;
@@ -176,47 +177,49 @@ static void hatched(cairo_t *cr, const pic *P, int b)
     cairo_stroke(cr);
 }
 
-static void hinge_dot(cairo_t *cr, const pic *P, bl_vec2 q)
+/* The markers' sizes are in units of `size` (P->unit in the legend,
+ * P->mark on the drawing). */
+static void hinge_dot(cairo_t *cr, double size, bl_vec2 q)
 {
     cairo_new_path(cr);
-    cairo_arc(cr, q.x, q.y, fmax(2.5, 5.0 * P->unit), 0.0, 2.0 * M_PI);
+    cairo_arc(cr, q.x, q.y, 5.0 * size, 0.0, 2.0 * M_PI);
     color(cr, HINGE);
     cairo_fill_preserve(cr);
     color(cr, HINGE_EDGE);
-    cairo_set_line_width(cr, fmax(0.6, 1.0 * P->unit));
+    cairo_set_line_width(cr, size);
     cairo_stroke(cr);
 }
 
-static void hinge_line(cairo_t *cr, const pic *P, bl_vec2 a, bl_vec2 b)
+static void hinge_line(cairo_t *cr, double size, bl_vec2 a, bl_vec2 b)
 {
     cairo_new_path(cr);
     cairo_move_to(cr, a.x, a.y);
     cairo_line_to(cr, b.x, b.y);
     color(cr, HINGE);
-    cairo_set_line_width(cr, fmax(2.5, 5.0 * P->unit));
+    cairo_set_line_width(cr, 5.0 * size);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
     cairo_stroke(cr);
 }
 
-static void sliding_line(cairo_t *cr, const pic *P, bl_vec2 a, bl_vec2 b)
+static void sliding_line(cairo_t *cr, double size, bl_vec2 a, bl_vec2 b)
 {
     cairo_new_path(cr);
     cairo_move_to(cr, a.x, a.y);
     cairo_line_to(cr, b.x, b.y);
     color(cr, SLIDING);
-    cairo_set_line_width(cr, fmax(2.0, 4.5 * P->unit));
+    cairo_set_line_width(cr, 4.5 * size);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
     cairo_stroke(cr);
 }
 
-static void separating_line(cairo_t *cr, const pic *P, bl_vec2 a, bl_vec2 b)
+static void separating_line(cairo_t *cr, double size, bl_vec2 a, bl_vec2 b)
 {
-    double dash[2] = {7.0 * P->unit, 4.0 * P->unit};
+    double dash[2] = {7.0 * size, 4.0 * size};
     cairo_new_path(cr);
     cairo_move_to(cr, a.x, a.y);
     cairo_line_to(cr, b.x, b.y);
     color(cr, SEPARATING);
-    cairo_set_line_width(cr, 2.4 * P->unit);
+    cairo_set_line_width(cr, 2.4 * size);
     cairo_set_dash(cr, dash, 2, 0.0);
     cairo_stroke(cr);
     cairo_set_dash(cr, NULL, 0, 0.0);
@@ -239,9 +242,9 @@ static double legend(cairo_t *cr, const pic *P, double x, double y, int draw)
     for (int i = 0; i < 3; i++) {
         if (draw) {
             bl_vec2 a = bl_v2(x, mid), b = bl_v2(x + sample, mid);
-            if (i == 0) hinge_dot(cr, P, bl_v2(x + 0.5 * sample, mid));
-            if (i == 1) sliding_line(cr, P, a, b);
-            if (i == 2) separating_line(cr, P, a, b);
+            if (i == 0) hinge_dot(cr, P->unit, bl_v2(x + 0.5 * sample, mid));
+            if (i == 1) sliding_line(cr, P->unit, a, b);
+            if (i == 2) separating_line(cr, P->unit, a, b);
         }
         x += sample + pad;
         cairo_text_extents_t te;
@@ -348,6 +351,12 @@ static void layout(pic *P, const bl_solution *s, int width, double azimuth, doub
         P->x0 = 0.5 * (P->w - bw * P->sc) - box[0] * P->sc;
         P->y0 = P->top + box[3] * P->sc;
     }
+    /* markers of at most about a third of the canvas's share per block, so
+     * that on walls of thousands of blocks they do not cover the blocks
+     * (a hinge's dot is 10 marks across); never below a fifth of unit */
+    P->mark = P->unit;
+    if (P->m)
+        P->mark = fmin(P->unit, fmax(0.2 * P->unit, sqrt(dw * P->dh / P->m->nblocks) / 30.0));
     const char *name = bl_status_name(s->status);
     snprintf(P->caption, sizeof P->caption, "alpha = %.5g  (%s, %s flow, %s%s)", s->alpha,
              name ? name : "?", s->flow, s->method, s->verified ? ", verified" : "");
@@ -420,10 +429,10 @@ static void joint3(cairo_t *cr, const pic *P, int i, int e, int vertex)
     int side = anchor3(P, f), e1 = (e + 1) % f->np;
     bl_vec2 a = dev(P, project(P, moved3(P, side, f->poly[e])));
     bl_vec2 b = dev(P, project(P, moved3(P, side, f->poly[e1])));
-    if (vertex) hinge_dot(cr, P, a);
-    else if (s->state[i] == BL_SLIDING) sliding_line(cr, P, a, b);
-    else if (s->state[i] == BL_SEPARATING) separating_line(cr, P, a, b);
-    else hinge_line(cr, P, a, b);
+    if (vertex) hinge_dot(cr, P->mark, a);
+    else if (s->state[i] == BL_SLIDING) sliding_line(cr, P->mark, a, b);
+    else if (s->state[i] == BL_SEPARATING) separating_line(cr, P->mark, a, b);
+    else hinge_line(cr, P->mark, a, b);
 }
 
 /* The pieces of joint i's marker (see joint3) whose point (an edge's
@@ -601,10 +610,11 @@ static void draw(cairo_t *cr, const pic *P)
                     bl_vec2 a = dev(P, moved(P, side, f->p[0]));
                     bl_vec2 b = dev(P, moved(P, side, f->p[1]));
                     int h = s->hinge ? s->hinge[i] : -1;
-                    if (pass == 0 && s->state[i] == BL_SLIDING) sliding_line(cr, P, a, b);
-                    if (pass == 0 && s->state[i] == BL_SEPARATING) separating_line(cr, P, a, b);
+                    if (pass == 0 && s->state[i] == BL_SLIDING) sliding_line(cr, P->mark, a, b);
+                    if (pass == 0 && s->state[i] == BL_SEPARATING)
+                        separating_line(cr, P->mark, a, b);
                     if (pass == 1 && s->state[i] == BL_ROCKING && (h == 0 || h == 1))
-                        hinge_dot(cr, P, h ? b : a);
+                        hinge_dot(cr, P->mark, h ? b : a);
                 }
         }
     }

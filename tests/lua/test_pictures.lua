@@ -83,6 +83,39 @@ for _, case in ipairs { { 1.0, "rocking" }, { 0.2, "sliding" } } do
 end
 os.remove(svg)
 
+-- The hinges' dots: as wide as the legend's on W4, and smaller on a wall of
+-- 1,620 blocks, where a course is drawn at most 0.175 m x 920 px / 16 m =
+-- 10.1 px high, the legend's dot 10 px wide: there a dot must leave at least
+-- 40 % of a course free, and stay at least 2 px wide (the legend's dot is
+-- drawn last).
+local function dots(file)
+  local fh = io.open(file, "rb")
+  local t = fh and fh:read("a") or ""
+  if fh then fh:close() end
+  local d = {}
+  for x, ex in t:gmatch('fill:rgb%(84%%,9%%,9%%%)[^>]-d="M ([%d.]+) [%d.]+ C [%d.]+ [%d.]+ [%d.]+ [%d.]+ ([%d.]+)') do
+    d[#d + 1] = tonumber(x) - tonumber(ex)
+  end
+  return d
+end
+local function spread(d)
+  local lo, hi = math.huge, 0
+  for k = 1, #d - 1 do lo, hi = math.min(lo, d[k]), math.max(hi, d[k]) end
+  return lo, hi, d[#d]
+end
+r:svg(svg)
+local lo, hi, legend = spread(dots(svg))
+T.ok(#dots(svg) > 1 and lo == legend and hi == legend,
+     "W4: the hinges' dots as wide as the legend's", ("%g to %g, legend %g"):format(lo, hi, legend))
+model { mu = 0.65 }
+wall { courses = walls.running_bond(40), unit = { 0.4, 0.175 } }
+solve { flow = "associative" }:svg(svg)
+lo, hi, legend = spread(dots(svg))
+T.ok(#dots(svg) > 1 and hi <= 0.6 * 10.1 and lo >= 2 and legend == 10,
+     "1,620 blocks: the hinges' dots at most 0.6 of a course high, at least 2 px",
+     ("%g to %g, legend %g"):format(lo, hi, legend))
+os.remove(svg)
+
 -- VTK: a block 0.5 x 1 x 1 (weight 0.5) rocking at alpha = b/h = 0.5; the
 -- interface force on it balances its weight and the live load, (-0.25, 0, 0.5)
 local vtk = dir .. "/blocklim_test.vtk"
