@@ -87,6 +87,11 @@ function Result.__tostring(r)
             table.concat(stops, ", ", i, math.min(i + 5, #stops)))
       end
     end
+    if r.status == "not certified" then
+      -- the settings that certified such runs (doc/guide.md, "Large models")
+      say("  other settings send the sequence another way: solve again with settle = 1e-3,")
+      say("  a larger lps or starts = K, and take the lowest alpha that certifies")
+    end
   end
   if r.ipopt then
     local i = r.ipopt

@@ -65,6 +65,15 @@ end
 T.ok(shown == table.concat(want, ", "),
      "W4, lps = 3: print(r) gives where each start stopped, start 1 after going on",
      ("%s | %s"):format(tostring(shown), table.concat(want, ", ")))
+-- ... and what to try then.  With lps = 8 no start of W4 certifies by
+-- default; the first setting print(r) names certifies the published value.
+local eight = solve { flow = "nonassociative", lps = 8 }
+local hint = tostring(eight):match("solve again with (settle = [^,]*),")
+local again = hint and solve { flow = "nonassociative", lps = 8, settle = tonumber(hint:match("= (.*)")) }
+T.ok(eight.status == "not certified" and again and again.certified and again.verified
+     and math.abs(again.alpha - 0.26374) <= 0.00005,
+     "W4, lps = 8: not certified, and the setting print(r) suggests certifies 0.26374 +- 0.00005",
+     ("%s, hint %s, %s"):format(eight.status, tostring(hint), again and again.alpha or "-"))
 -- Going on where it stopped: the continuation begins at start 1's last
 -- alpha, and its first LP has the capacities of a single start's fourth
 -- (the same LP, hence the same optimal alpha, to 1e-9 relative).
