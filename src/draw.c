@@ -353,7 +353,8 @@ static void layout(pic *P, const bl_solution *s, int width, double azimuth, doub
     }
     /* markers of at most about a third of the canvas's share per block, so
      * that on walls of thousands of blocks they do not cover the blocks
-     * (a hinge's dot is 10 marks across); never below a fifth of unit */
+     * (a hinge's dot is 10 marks across), and the blocks' outlines with
+     * them; never below a fifth of unit */
     P->mark = P->unit;
     if (P->m)
         P->mark = fmin(P->unit, fmax(0.2 * P->unit, sqrt(dw * P->dh / P->m->nblocks) / 30.0));
@@ -546,7 +547,7 @@ static void draw3(cairo_t *cr, const pic *P)
         cairo_set_source_rgb(cr, base.r * shade, base.g * shade, base.b * shade);
         cairo_fill_preserve(cr);
         color(cr, B->support ? SUPPORT_EDGE : BLOCK_EDGE);
-        cairo_set_line_width(cr, 0.9 * P->unit);
+        cairo_set_line_width(cr, 0.9 * P->mark);
         cairo_stroke(cr);
     }
     free(F);
@@ -578,7 +579,7 @@ static void draw(cairo_t *cr, const pic *P)
                 if (m->blocks[b].support) continue;
                 block_path(cr, P, b, 0);
                 color(cr, GHOST);
-                cairo_set_line_width(cr, 0.9 * P->unit);
+                cairo_set_line_width(cr, 0.9 * P->mark);
                 cairo_stroke(cr);
             }
         }
@@ -596,7 +597,7 @@ static void draw(cairo_t *cr, const pic *P)
             cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, P->k > 0.0 ? 0.88 : 1.0);
             cairo_fill_preserve(cr);
             color(cr, BLOCK_EDGE);
-            cairo_set_line_width(cr, 1.2 * P->unit);
+            cairo_set_line_width(cr, 1.2 * P->mark);
             cairo_stroke(cr);
         }
         if (P->k > 0.0 && s->state) {

@@ -103,10 +103,28 @@ local function spread(d)
   for k = 1, #d - 1 do lo, hi = math.min(lo, d[k]), math.max(hi, d[k]) end
   return lo, hi, d[#d]
 end
+-- The blocks' outlines thin with the markers: 1.2 px on W4 at 1,000 px
+-- wide (models of up to a few hundred blocks are drawn as they were), and
+-- on the 1,620-block wall at most a tenth of a course's 10.1 px, so that
+-- the outlines of thousands of blocks do not darken the picture, and at
+-- least a fifth of 1.2 px.
+local function edges(file)
+  local fh = io.open(file, "rb")
+  local t = fh and fh:read("a") or ""
+  if fh then fh:close() end
+  local lo, hi, n = math.huge, 0, 0
+  for w in t:gmatch("stroke%-width:([%d.]+);[^\"]-stroke:rgb%(33%%,17%%,10%%%)") do
+    lo, hi, n = math.min(lo, tonumber(w)), math.max(hi, tonumber(w)), n + 1
+  end
+  return lo, hi, n
+end
 r:svg(svg)
 local lo, hi, legend = spread(dots(svg))
 T.ok(#dots(svg) > 1 and lo == legend and hi == legend,
      "W4: the hinges' dots as wide as the legend's", ("%g to %g, legend %g"):format(lo, hi, legend))
+local elo, ehi, en = edges(svg)
+T.ok(en == 55 and math.abs(elo - 1.2) < 1e-9 and ehi == elo, "W4: every block outlined 1.2 px wide",
+     ("%d outlines, %g to %g px"):format(en, elo, ehi))
 model { mu = 0.65 }
 wall { courses = walls.running_bond(40), unit = { 0.4, 0.175 } }
 solve { flow = "associative" }:svg(svg)
@@ -114,6 +132,10 @@ lo, hi, legend = spread(dots(svg))
 T.ok(#dots(svg) > 1 and hi <= 0.6 * 10.1 and lo >= 2 and legend == 10,
      "1,620 blocks: the hinges' dots at most 0.6 of a course high, at least 2 px",
      ("%g to %g, legend %g"):format(lo, hi, legend))
+elo, ehi, en = edges(svg)
+T.ok(en == 1620 and ehi <= 0.1 * 10.1 and elo >= 0.2 * 1.2,
+     "1,620 blocks: the blocks' outlines at most a tenth of a course high, at least 0.24 px",
+     ("%d outlines, %g to %g px"):format(en, elo, ehi))
 os.remove(svg)
 
 -- VTK: a block 0.5 x 1 x 1 (weight 0.5) rocking at alpha = b/h = 0.5; the
