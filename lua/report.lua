@@ -87,8 +87,9 @@ function Result.__tostring(r)
             table.concat(stops, ", ", i, math.min(i + 5, #stops)))
       end
     end
-    if r.status == "not certified" then
-      -- the settings that certified such runs (doc/guide.md, "Large models")
+    if r.status == "not certified" and not (r.note and r.note:find("no equilibrium", 1, true)) then
+      -- the settings that certified such runs (doc/guide.md, "Large
+      -- models"); none gives an equilibrium that the capacities lack
       say("  other settings send the sequence another way: solve again with settle = 1e-3,")
       say("  a larger lps or starts = K, and take the lowest alpha that certifies")
     end

@@ -190,6 +190,10 @@ T.ok(r.status == "not certified" and not r.certified and not r.verified and r.re
 T.ok(r.alpha ~= r.alpha, "no lintel: alpha is NaN, not the last LP's value", tostring(r.alpha))
 T.ok(r.note and r.note:find("at blocks 9", 1, true),
      "no lintel: the note names block 9, the one over the opening", r.note)
+T.ok(not tostring(r):find("solve again", 1, true)
+     and solve { flow = "nonassociative", settle = 1e-3 }.status == "not certified"
+     and solve { flow = "nonassociative", lps = 300 }.status == "not certified",
+     "no lintel: print(r) suggests no other settings, and settle = 1e-3 or lps = 300 would not certify")
 
 -- Walls with random openings: never above the associative answer, always
 -- certified, reproducible.
