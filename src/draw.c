@@ -44,7 +44,8 @@ typedef struct pic {
     double maxd;          /* largest vertex speed of the mechanism */
     double w, h;
     double unit;          /* line widths and text follow the picture width */
-    double mark;          /* the joints' markers: unit, less where blocks are drawn small */
+    double mark;          /* the joints' markers and the blocks' outlines: unit, less where
+                             blocks are drawn small */
     double sc, x0, y0;    /* model (x, y) -> canvas (x0 + sc x, y0 - sc y) */
     double top, dh;       /* drawing area, canvas units */
     double font;
