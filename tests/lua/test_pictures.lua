@@ -57,10 +57,15 @@ os.remove(svg); os.remove(png)
 -- mu > b/h = 0.5 and slides when mu < 0.5.  The SVG strokes the hinge red
 -- (the legend draws its hinge as a dot, with another colour) and a sliding
 -- joint's four edges blue (the legend adds one blue stroke).
-local function strokes(file, colour)
+-- A file's whole text ("" when it cannot be read).
+local function contents(file)
   local fh = io.open(file, "rb")
   local t = fh and fh:read("a") or ""
   if fh then fh:close() end
+  return t
+end
+local function strokes(file, colour)
+  local t = contents(file)
   local n = 0
   for _ in t:gmatch(("stroke:rgb(" .. colour .. ")"):gsub("%p", "%%%0")) do n = n + 1 end
   return n
@@ -89,9 +94,7 @@ os.remove(svg)
 -- 40 % of a course free, and stay at least 2 px wide (the legend's dot is
 -- drawn last).
 local function dots(file)
-  local fh = io.open(file, "rb")
-  local t = fh and fh:read("a") or ""
-  if fh then fh:close() end
+  local t = contents(file)
   local d = {}
   for x, ex in t:gmatch('fill:rgb%(84%%,9%%,9%%%)[^>]-d="M ([%d.]+) [%d.]+ C [%d.]+ [%d.]+ [%d.]+ [%d.]+ ([%d.]+)') do
     d[#d + 1] = tonumber(x) - tonumber(ex)
@@ -109,9 +112,7 @@ end
 -- the outlines of thousands of blocks do not darken the picture, and at
 -- least a fifth of 1.2 px.
 local function edges(file)
-  local fh = io.open(file, "rb")
-  local t = fh and fh:read("a") or ""
-  if fh then fh:close() end
+  local t = contents(file)
   local lo, hi, n = math.huge, 0, 0
   for w in t:gmatch("stroke%-width:([%d.]+);[^\"]-stroke:rgb%(33%%,17%%,10%%%)") do
     lo, hi, n = math.min(lo, tonumber(w)), math.max(hi, tonumber(w)), n + 1
