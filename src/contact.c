@@ -173,6 +173,38 @@ static int apply_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
     return 0;
 }
 
+int bl_joint_check(const bl_model *m, const bl_joint_spec *s, bl_error *err)
+{
+    if (s->npoints == 0) return 0;
+    double tol, gap;
+    bl_contact_tolerances(m, &tol, &gap);
+    const bl_block *blk[2] = {&m->blocks[s->a], &m->blocks[s->b]};
+    double size = m->dim == 3 ? fmin(cbrt(blk[0]->volume), cbrt(blk[1]->volume))
+                              : fmin(sqrt(blk[0]->area), sqrt(blk[1]->area));
+    double far = fmax(BL_JOINT_REACH * size, gap);
+    int n = s->npoints;
+    bl_vec2 mid = bl_v2_scale(bl_v2_add(s->p[0], s->p[1]), 0.5);
+    bl_vec3 mean = {0, 0, 0};
+    for (int i = 0; i < n && m->dim == 3; i++) mean = bl_v3_add(mean, bl_v3_scale(s->p3[i], 1.0 / n));
+    /* every point, then the middle (a joint cut across a block) */
+    for (int i = 0; i <= n; i++)
+        for (int j = 0; j < 2; j++) {
+            double d = m->dim == 3 ? bl_polyhedron_depth(&blk[j]->solid, i < n ? s->p3[i] : mean)
+                                   : bl_polygon_depth(blk[j]->v, blk[j]->nv, i < n ? s->p[i] : mid);
+            if (fabs(d) <= far) continue;
+            char what[48];
+            if (i < n) snprintf(what, sizeof what, "point %d of field 'points'", i + 1);
+            else snprintf(what, sizeof what, "the %s of field 'points'", m->dim == 3 ? "centroid" : "middle");
+            return bl_error_set(err,
+                                "interface: %s lies %.3g %s block %d; a declared joint must lie "
+                                "on the %s of both blocks (within %.3g, a tenth of the smaller "
+                                "block's size, or the near-miss gap)",
+                                what, fabs(d), d > 0 ? "inside" : "outside", (j ? s->b : s->a) + 1,
+                                m->dim == 3 ? "faces" : "edges", far);
+        }
+    return 0;
+}
+
 /* Lists the first few items of a problem class into buf. */
 static void list(char *buf, size_t size, char items[][128], int shown, int total)
 {

@@ -551,6 +551,7 @@ static int model_interface(lua_State *L)
         return fail(L, m->dim == 3 ? "interface: give 'mu', 'cohesion', 'model', 'mu_t' or 'points'"
                                    : "interface: give 'mu', 'cohesion' or 'points'");
     bl_error err;
+    if (bl_joint_check(m, &s, &err)) return fail(L, "%s", err.msg);
     if (!s.npoints) { /* an override needs an interface to act on: check now */
         if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
         int found = 0;
@@ -627,7 +628,15 @@ static int load_3d(lua_State *L, bl_model *m)
         if (!has_force && !has_moment)
             fail(L, "%s: give field 'force' {fx, fy, fz} (at 'at'), 'moment' {mx, my, mz}, or both", fn);
         pl[k].at3 = m->blocks[pl[k].block].centroid3;
-        if (field(L, t, "at")) pl[k].at3 = to_point3(L, fn, "field 'at'");
+        if (field(L, t, "at")) {
+            pl[k].at3 = to_point3(L, fn, "field 'at'");
+            const bl_block *bk = &m->blocks[pl[k].block];
+            const double *b = bk->box3;
+            double tol = 1e-9 * hypot(hypot(b[3] - b[0], b[4] - b[1]), b[5] - b[2]);
+            if (bl_polyhedron_depth(&bk->solid, pl[k].at3) < -tol)
+                fail(L, "%s: field 'at' (%g, %g, %g) is outside block %d", fn, pl[k].at3.x,
+                     pl[k].at3.y, pl[k].at3.z, pl[k].block + 1);
+        }
         if (field(L, t, "force")) pl[k].force3 = to_point3(L, fn, "field 'force'");
         if (field(L, t, "moment")) pl[k].moment3 = to_point3(L, fn, "field 'moment'");
         pl[k].live = k;

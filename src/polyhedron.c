@@ -77,26 +77,68 @@ static double segment_distance(bl_vec3 q, bl_vec3 a, bl_vec3 b)
     return bl_v3_norm(bl_v3_sub(aq, bl_v3_scale(ab, t)));
 }
 
-int bl_polyhedron_on_face(const bl_polyhedron *p, int k, bl_vec3 q, double tol)
+/* Whether q, taken in the plane of face k (normal n), lies inside the
+ * face: crossings of a ray in the plane of the two coordinates along which
+ * the face is widest. */
+static int inside_face(const bl_polyhedron *p, int k, bl_vec3 n, bl_vec3 q)
 {
-    bl_vec3 n = bl_polyhedron_face_normal(p, k, NULL);
     int a0 = p->fs[k], len = p->fs[k + 1] - a0;
-    if (fabs(bl_v3_dot(n, bl_v3_sub(q, p->v[p->fi[a0]]))) > tol) return 0;
-    /* crossings of a ray in the plane of the two coordinates along which
-     * the face is widest */
     double an[3] = {fabs(n.x), fabs(n.y), fabs(n.z)};
     int drop = an[0] >= an[1] && an[0] >= an[2] ? 0 : an[1] >= an[2] ? 1 : 2;
-    int inside = 0;
+    int u = (drop + 1) % 3, v = (drop + 2) % 3, inside = 0;
+    double Q[3] = {q.x, q.y, q.z};
     for (int i = 0; i < len; i++) {
         bl_vec3 a = p->v[p->fi[a0 + i]], b = p->v[p->fi[a0 + (i + 1) % len]];
-        if (segment_distance(q, a, b) <= tol) return 1;
-        double A[3] = {a.x, a.y, a.z}, B[3] = {b.x, b.y, b.z}, Q[3] = {q.x, q.y, q.z};
-        int u = (drop + 1) % 3, v = (drop + 2) % 3;
+        double A[3] = {a.x, a.y, a.z}, B[3] = {b.x, b.y, b.z};
         if ((A[v] > Q[v]) != (B[v] > Q[v]) &&
             Q[u] < A[u] + (Q[v] - A[v]) * (B[u] - A[u]) / (B[v] - A[v]))
             inside = !inside;
     }
     return inside;
+}
+
+/* Distance from q to the edges of face k. */
+static double edge_distance(const bl_polyhedron *p, int k, bl_vec3 q)
+{
+    int a0 = p->fs[k], len = p->fs[k + 1] - a0;
+    double d = INFINITY;
+    for (int i = 0; i < len; i++)
+        d = fmin(d, segment_distance(q, p->v[p->fi[a0 + i]], p->v[p->fi[a0 + (i + 1) % len]]));
+    return d;
+}
+
+int bl_polyhedron_on_face(const bl_polyhedron *p, int k, bl_vec3 q, double tol)
+{
+    bl_vec3 n = bl_polyhedron_face_normal(p, k, NULL);
+    if (fabs(bl_v3_dot(n, bl_v3_sub(q, p->v[p->fi[p->fs[k]]]))) > tol) return 0;
+    return edge_distance(p, k, q) <= tol || inside_face(p, k, n, q);
+}
+
+/* Solid angle of the triangle abc seen from the origin, signed by the
+ * triangle's orientation (Van Oosterom and Strackee). */
+static double solid_angle(bl_vec3 a, bl_vec3 b, bl_vec3 c)
+{
+    double la = bl_v3_norm(a), lb = bl_v3_norm(b), lc = bl_v3_norm(c);
+    return 2.0 * atan2(bl_v3_dot(a, bl_v3_cross(b, c)),
+                       la * lb * lc + bl_v3_dot(a, b) * lc + bl_v3_dot(a, c) * lb + bl_v3_dot(b, c) * la);
+}
+
+double bl_polyhedron_depth(const bl_polyhedron *p, bl_vec3 q)
+{
+    double d = INFINITY, omega = 0.0;
+    for (int k = 0; k < p->nf; k++) {
+        bl_vec3 n = bl_polyhedron_face_normal(p, k, NULL);
+        int a0 = p->fs[k], len = p->fs[k + 1] - a0;
+        bl_vec3 v0 = bl_v3_sub(p->v[p->fi[a0]], q);
+        double h = bl_v3_dot(n, v0);
+        bl_vec3 foot = bl_v3_add(q, bl_v3_scale(n, h));
+        d = fmin(d, inside_face(p, k, n, foot) ? fabs(h) : edge_distance(p, k, q));
+        for (int i = 1; i + 1 < len; i++)
+            omega += solid_angle(v0, bl_v3_sub(p->v[p->fi[a0 + i]], q),
+                                 bl_v3_sub(p->v[p->fi[a0 + i + 1]], q));
+    }
+    /* the faces turn outward: 4 pi inside, 0 outside */
+    return fabs(omega) > 2.0 * M_PI ? d : -d;
 }
 
 int bl_polygon3_check(const bl_vec3 *p, int n, double tol, bl_vec3 *normal, double *area)

@@ -59,6 +59,10 @@ bl_vec3 bl_polyhedron_face_normal(const bl_polyhedron *p, int k, double *area);
  * within tol of its boundary). */
 int bl_polyhedron_on_face(const bl_polyhedron *p, int k, bl_vec3 q, double tol);
 
+/* Signed distance of q to the surface of a checked polyhedron: positive
+ * inside, negative outside (as bl_polygon_depth in 2D). */
+double bl_polyhedron_depth(const bl_polyhedron *p, bl_vec3 q);
+
 /* Checks a polygon of n points in space (in order, either way round):
  * returns 0 with its unit normal (right hand along the order) and area;
  * -1 when it has no area, -2 when it is not convex, or -(k + 1) when its

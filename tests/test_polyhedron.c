@@ -154,11 +154,49 @@ static void hull(void **state)
     assert_non_null(strstr(err.msg, "no volume"));
 }
 
+/* Signed distances to the surface, by hand: a box and an L-shaped prism
+ * (not convex: a point in its notch is outside). */
+static void depth(void **state)
+{
+    (void)state;
+    bl_vec3 v[12];
+    box(v, 2, 3, 4, 0);
+    bl_polyhedron p;
+    bl_error err;
+    assert_int_equal(bl_polyhedron_make(&p, v, 8, box_fs, box_fi, 6), 0);
+    assert_int_equal(bl_polyhedron_check(&p, 1e-9, 1, &err), 0);
+    assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(1, 1.5, 2)) - 1.0) < 1e-12);
+    assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(0.2, 1.5, 2)) - 0.2) < 1e-12);
+    assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(3, 1.5, 2)) + 1.0) < 1e-12);
+    assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(3, 4, 2)) + sqrt(2.0)) < 1e-12);
+    assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(3, 4, 5)) + sqrt(3.0)) < 1e-12);
+    bl_polyhedron_free(&p);
+    /* the L (0,0) (2,0) (2,1) (1,1) (1,2) (0,2), from z = 0 to 1 */
+    double x[6] = {0, 2, 2, 1, 1, 0}, y[6] = {0, 0, 1, 1, 2, 2};
+    for (int i = 0; i < 6; i++) {
+        v[i] = bl_v3(x[i], y[i], 0);
+        v[i + 6] = bl_v3(x[i], y[i], 1);
+    }
+    int fs[9] = {0, 6, 12, 16, 20, 24, 28, 32, 36}, fi[36] = {5, 4, 3, 2, 1, 0, 6, 7, 8, 9, 10, 11};
+    for (int i = 0; i < 6; i++) {
+        int j = (i + 1) % 6, *f = fi + 12 + 4 * i;
+        f[0] = i, f[1] = j, f[2] = j + 6, f[3] = i + 6;
+    }
+    assert_int_equal(bl_polyhedron_make(&p, v, 12, fs, fi, 8), 0);
+    assert_int_equal(bl_polyhedron_check(&p, 1e-9, 1, &err), 0);
+    assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(1.5, 1.5, 0.5)) + 0.5) < 1e-12);
+    assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(1.8, 1.9, 0.5)) + 0.8) < 1e-12);
+    assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(0.5, 1.5, 0.5)) - 0.5) < 1e-12);
+    assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(1.5, 0.8, 0.5)) - 0.2) < 1e-12);
+    assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(1.5, 0.5, -0.25)) + 0.25) < 1e-12);
+    bl_polyhedron_free(&p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(box_volume), cmocka_unit_test(tetrahedron), cmocka_unit_test(bad_solids),
-        cmocka_unit_test(inverted_faces), cmocka_unit_test(hull),
+        cmocka_unit_test(inverted_faces), cmocka_unit_test(hull), cmocka_unit_test(depth),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

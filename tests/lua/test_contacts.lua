@@ -55,6 +55,17 @@ rect(0, 0, 1, 1); rect(-1, -1, 2, 0, true)
 interface { 1, 2, points = { { 0, 0 }, { 0.5, 0 } } }
 T.near(solve {}.alpha, 0.0, 1e-9, "hand-made joint under the left half: alpha = 0 (hinge below centroid)")
 
+-- A joint declared across a real gap (0.005 < a tenth of the block): the
+-- block 1 x 1 stands 0.005 above its support, mu = 2; it rocks about the
+-- declared joint's end (1, 0), its centroid 0.505 above it:
+-- alpha = 0.5 / 0.505.
+model { mu = 2 }
+rect(0, 0.005, 1, 1.005); rect(-1, -1, 2, 0, true)
+interface { 1, 2, points = { { 0, 0 }, { 1, 0 } } }
+T.eq(contacts { gap = 0 }, 1, "a joint declared across a gap: the only interface")
+T.near(solve { flow = "associative" }.alpha, 0.5 / 0.505, 1e-9,
+       "a joint declared across a gap of 0.005: alpha = 0.5 / 0.505")
+
 -- Mistakes: a near-miss, an overlap, a floating block.
 model {}
 rect(0, 1e-4, 1, 1); rect(-1, -1, 2, 0, true)

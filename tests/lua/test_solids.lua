@@ -396,6 +396,22 @@ for _, case in ipairs {
   T.raises(function() interface { 1, 2, points = case[1] } end,
            "3D joint by hand refused: " .. case[2], "interface: field 'points'", case[2])
 end
+-- a declared polygon must lie on both blocks' faces: one 3 x 3 under the
+-- cube of side 1 reaches sqrt(2) past its corners, one at z = 5 floats
+for _, case in ipairs {
+  { { { -1.5, -1.5, 0 }, { 1.5, -1.5, 0 }, { 1.5, 1.5, 0 }, { -1.5, 1.5, 0 } }, "1.41 outside block 2" },
+  { { { -0.25, -0.25, 5 }, { 0.25, -0.25, 5 }, { 0.25, 0.25, 5 } }, "5 outside block 1" },
+} do
+  T.raises(function() interface { 1, 2, points = case[1] } end, "3D joint by hand off the blocks: " .. case[2],
+           "interface: point 1 of field 'points' lies " .. case[2], "within 0.1")
+end
+T.near(solve { flow = "associative" }.alpha, 0.5, 1e-8, "3D joints refused: the model is as it was")
+T.raises(function() load { live = { block = 2, at = { 9, 9, 9 }, force = { 1, 0, 0 } } } end,
+         "3D point load outside its block", "load live: field 'at' (9, 9, 9) is outside block 2")
+T.raises(function() load { live = { block = 2, at = { 0, 0, -0.01 }, force = { 1, 0, 0 } } } end,
+         "3D point load just below its block", "outside block 2")
+load { live = { block = 2, at = { 0.5, 0.5, 1 }, force = { 1, 0, 0 } } }
+T.ok(true, "3D point load at a corner of its block is accepted")
 
 -- cohesion in 3D: a flat box 2 x 2 x 0.5 (b/h = 4, it slides) on a slab,
 -- mu = 0.3, cohesion c = 0.05 per unit area over the 4 of its base.  The
