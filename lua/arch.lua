@@ -50,6 +50,23 @@ return function(M)
     end
     local th = positive(t, "thickness")
     if th >= 2 * R then fail("field 'thickness' must be less than the diameter of the centre line") end
+    -- each voussoir is a quadrilateral on its chords: less than a half turn
+    if angle / n >= 180 then
+      fail(("field 'n' must be more than angle / 180 = %g (a voussoir spans less than 180 degrees), got %d")
+        :format(angle / 180, n))
+    end
+    -- the springings continue the end joints along the tangent, th wide at
+    -- the intrados: they meet where the opening leaves less than that
+    local room = 360 - 2 * math.deg(math.atan(th, R - th / 2))
+    if angle >= room then
+      fail(("field 'angle' leaves no room for the springings: with this thickness it must be below %.4g degrees")
+        :format(room))
+    end
+    local c = t.centre or { 0, 0 }
+    if type(c) ~= "table" or type(c[1]) ~= "number" or type(c[2]) ~= "number"
+        or not (math.abs(c[1]) < math.huge and math.abs(c[2]) < math.huge) then
+      fail("field 'centre' must be a point {x, y} of two finite numbers")
+    end
     local m = M.current()
     local solid = m and m:dim() == 3
     local length, segments = t.length, t.segments or 1
@@ -77,7 +94,6 @@ return function(M)
       end
       return made
     end
-    local c = t.centre or { 0, 0 }
     local ri, ro = R - th / 2, R + th / 2
     local function at(r, a) return { c[1] + r * math.cos(a), c[2] + r * math.sin(a) } end
     local a0 = math.pi / 2 + half -- left springing

@@ -56,6 +56,29 @@ return function(core)
   require("blocklim.compare")(M)
   require("blocklim.masonry")(M, require("blocklim.solid")(M))
 
+  -- The commands written in Lua.  Whatever goes wrong inside one (its own
+  -- checks, or a command it calls, such as block{} for each block of a
+  -- wall) is raised again at the user's call: without this module's file
+  -- and line, and starting with the command's name.
+  local function guard(name, f)
+    return function(...)
+      if not current then
+        error(name .. ": no current model; start one with model{ mu = 0.65 }", 2)
+      end
+      local res = table.pack(pcall(f, ...))
+      if res[1] then return table.unpack(res, 2, res.n) end
+      local msg = res[2]
+      if type(msg) ~= "string" then error(msg, 0) end
+      msg = msg:gsub("^%[blocklim [%w_]+%.lua%]:%d+: ", "")
+      if msg:sub(1, #name + 1) ~= name .. ":" then msg = name .. ": " .. msg end
+      error(msg, 2)
+    end
+  end
+  for _, name in ipairs { "wall", "arch", "compare", "box", "extrude", "dome", "facade", "corner",
+                          "pier", "bond" } do
+    M[name] = guard(name, M[name])
+  end
+
   M.version = "0.1"
   M.clock = core.clock
 

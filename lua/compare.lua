@@ -3,7 +3,8 @@
 -- compare{ methods = { "assoc", "seqlp", "mpec", { method = "mpec", start = "cold" } },
 --          lp = ..., tolerance = ... }
 -- Each entry of methods is a method name or a table of solve{} fields (with
--- an optional label); the other fields go to every solve.  Returns a
+-- an optional label); the other fields go to every solve whose method takes
+-- them (an entry's own fields come first).  Returns a
 -- comparison: rows[i] has the result and how far its mechanism agrees with
 -- the first row's (doc/theory.md, "Comparing methods"); print(c) shows the
 -- table.
@@ -45,6 +46,19 @@ return function(M)
     return table.concat(parts, " ")
   end
 
+  -- Whether a row of this method (and flow) takes the common field k: a
+  -- method that solves one flow rule takes no other flow, only Ipopt takes
+  -- its start and penalty, and the associative LP none of the sequence's
+  -- restarts and path (solve{} refuses each of them).
+  local seq_only = { starts = true, seed = true, nearest = true, path = true }
+  local mpec_only = { start = true, penalty = true, complementarity = true }
+  local function takes(method, flow, k)
+    if k == "flow" then return method ~= "assoc" and method ~= "seqlp" end
+    if mpec_only[k] then return method == "mpec" end
+    if seq_only[k] then return method ~= "assoc" and not (method == nil and flow == "associative") end
+    return true
+  end
+
   function M.compare(t)
     t = t or {}
     if type(t) ~= "table" then fail("expects a table of named fields, got " .. type(t)) end
@@ -62,15 +76,20 @@ return function(M)
     local rows = {}
     for i, entry in ipairs(methods) do
       local fields = {}
-      for k, v in pairs(common) do fields[k] = v end
       if type(entry) == "string" then
         fields.method = entry
       elseif type(entry) == "table" then
         for k, v in pairs(entry) do
           if k ~= "label" then fields[k] = v end
         end
+        if entry.label ~= nil and type(entry.label) ~= "string" then
+          fail(("methods[%d]: field 'label' must be a string, got %s"):format(i, type(entry.label)))
+        end
       else
         fail(("methods[%d] must be a method name or a table, got %s"):format(i, type(entry)))
+      end
+      for k, v in pairs(common) do
+        if fields[k] == nil and takes(fields.method, fields.flow or common.flow, k) then fields[k] = v end
       end
       if fields.method == "assoc" and fields.flow == nil then fields.flow = "associative" end
       local ok, r = pcall(m.solve, m, fields)

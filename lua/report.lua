@@ -109,8 +109,9 @@ function Result.__tostring(r)
     say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
         r.lp, r.iterations, size.rows, size.columns)
   end
-  local line = ("  %d blocks, %d support%s, %d interfaces"):format(
-    size.blocks, size.supports, size.supports == 1 and "" or "s", size.interfaces)
+  local function plural(n) return n == 1 and "" or "s" end
+  local line = ("  %d block%s, %d support%s, %d interface%s"):format(size.blocks, plural(size.blocks),
+    size.supports, plural(size.supports), size.interfaces, plural(size.interfaces))
   if r.states then
     local s = r.states
     line = line .. (": %d closed, %d rocking, %d sliding, %d separating")
@@ -204,7 +205,7 @@ function Blocks.__tostring(list)
     parts[#parts + 1] = i == j and tostring(list[i]) or ("%d-%d"):format(list[i], list[j])
     i = j + 1
   end
-  return ("%d blocks: %s"):format(#list, table.concat(parts, ", "))
+  return ("%d block%s: %s"):format(#list, #list == 1 and "" or "s", table.concat(parts, ", "))
 end
 function report.blocks(list) return setmetatable(list, Blocks) end
 

@@ -28,17 +28,21 @@ return function(M)
     if type(courses) ~= "table" or #courses == 0 then
       fail("field 'courses' must be a non-empty list of course patterns")
     end
-    if type(unit) ~= "table" or type(unit[1]) ~= "number" or type(unit[2]) ~= "number"
+    local function finite(v) return type(v) == "number" and v == v and math.abs(v) < math.huge end
+    if type(unit) ~= "table" or not finite(unit[1]) or not finite(unit[2])
         or not (unit[1] > 0 and unit[2] > 0) then
       fail("field 'unit' must be {L, H} with two positive numbers")
     end
     local origin = t.origin or { 0, 0 }
-    if type(origin) ~= "table" or type(origin[1]) ~= "number" or type(origin[2]) ~= "number" then
-      fail("field 'origin' must be a point {x, y}")
+    if type(origin) ~= "table" or not finite(origin[1]) or not finite(origin[2]) then
+      fail("field 'origin' must be a point {x, y} of two finite numbers")
+    end
+    if t.base ~= nil and type(t.base) ~= "boolean" then
+      fail("field 'base' must be true or false, got " .. tostring(t.base))
     end
     local L, H, x0, y0 = unit[1], unit[2], origin[1], origin[2]
     -- Check every entry before the first block is made.
-    local width = 0
+    local width, any = 0, false
     for c, course in ipairs(courses) do
       if type(course) ~= "table" or #course == 0 then
         fail(("field 'courses' entry %d must be a non-empty list of lengths"):format(c))
@@ -50,9 +54,11 @@ return function(M)
             :format(c, e, tostring(v)))
         end
         len = len + math.abs(v)
+        any = any or v > 0
       end
       width = math.max(width, len)
     end
+    if not any then fail("field 'courses' has no block: every entry is a gap") end
     local m = M.current()
     local solid = m and m:dim() == 3
     if solid then

@@ -360,8 +360,10 @@ static void layout(pic *P, const bl_solution *s, int width, double azimuth, doub
     if (P->m)
         P->mark = fmin(P->unit, fmax(0.2 * P->unit, sqrt(dw * P->dh / P->m->nblocks) / 30.0));
     const char *name = bl_status_name(s->status);
-    snprintf(P->caption, sizeof P->caption, "alpha = %.5g  (%s, %s flow, %s%s)", s->alpha,
-             name ? name : "?", s->flow, s->method, s->verified ? ", verified" : "");
+    char value[32] = "no alpha"; /* as print(r) says where a sequence found none */
+    if (!isnan(s->alpha)) snprintf(value, sizeof value, "alpha = %.5g", s->alpha);
+    snprintf(P->caption, sizeof P->caption, "%s  (%s, %s flow, %s%s)", value, name ? name : "?",
+             s->flow, s->method, s->verified ? ", verified" : "");
     P->has_legend = P->m && P->k > 0.0;
 
     /* text widths need a cairo context; a 1x1 image gives the same metrics

@@ -344,9 +344,11 @@ static int model_tostring(lua_State *L)
     int nfree = bl_model_free_blocks(m);
     char mu[32];
     snprintf(mu, sizeof mu, "%g", m->mu);
-    lua_pushfstring(L, "model%s%s: %d free blocks, %d support%s, mu = %s", m->name[0] ? " " : "",
-                    m->name, nfree, m->nblocks - nfree, m->nblocks - nfree == 1 ? "" : "s", mu);
-    if (m->contacts_valid) lua_pushfstring(L, ", %d interfaces", m->ninterfaces);
+    lua_pushfstring(L, "model%s%s: %d free block%s, %d support%s, mu = %s", m->name[0] ? " " : "",
+                    m->name, nfree, nfree == 1 ? "" : "s", m->nblocks - nfree,
+                    m->nblocks - nfree == 1 ? "" : "s", mu);
+    if (m->contacts_valid)
+        lua_pushfstring(L, ", %d interface%s", m->ninterfaces, m->ninterfaces == 1 ? "" : "s");
     else lua_pushstring(L, "");
     lua_concat(L, 2);
     return 1;
@@ -726,7 +728,9 @@ static int model_stats(lua_State *L)
 {
     bl_model *m = check_model(L, 1);
     bl_error err;
-    if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
+    /* a model without blocks has nothing to detect: its counts are 0 */
+    if (m->nblocks > 0 && !m->contacts_valid && bl_contact_detect(m, &err))
+        return fail(L, "%s", err.msg);
     int nfree = bl_model_free_blocks(m);
     double tol, gap;
     bl_contact_tolerances(m, &tol, &gap);
@@ -1060,6 +1064,7 @@ static int model_solve(lua_State *L)
     bl_model *m = check_model(L, 1);
     opt_table(L, 2);
     check_fields(L, 2, "solve", fields, 0);
+    if (m->nblocks == 0) fail(L, "solve: the model has no blocks; add them with block{}, wall{} or arch{}");
     /* By default, the non-associative answer (the associative one beside
      * it) wherever a joint has finite friction.  assoc and seqlp each solve
      * one flow rule, mpec either. */

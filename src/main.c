@@ -544,7 +544,8 @@ static int compile_as_return(lua_State *L)
 /* Reads and compiles one chunk, leaving the function (status LUA_OK) or an
  * error message on the stack.  A line is first tried as an expression, so
  * its values get printed; otherwise lines accumulate while the only
- * complaint is a premature end of input.  Returns CHUNK_EOF, with nothing
+ * complaint is a premature end of input, each time tried as an expression
+ * first too (a wall{...} typed over several lines prints its blocks).  Returns CHUNK_EOF, with nothing
  * pushed, at end of input. */
 static int read_chunk(lua_State *L, int interactive)
 {
@@ -586,6 +587,10 @@ again:
             lua_pushstring(L, line);
             free(line);
             lua_concat(L, 3);
+            if (compile_as_return(L)) {   /* an expression over several lines */
+                status = LUA_OK;
+                break;
+            }
         }
     }
     if (interactive)

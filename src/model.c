@@ -122,6 +122,13 @@ int bl_model_add_block(bl_model *m, const bl_vec2 *v, int nv, int support,
             flat = fabs(bl_v2_cross(bl_v2_sub(v[i], v[0]), bl_v2_sub(v[j], v[0]))) <=
                    1e-12 * size * size;
     if (flat) return bl_error_set(err, "block %d: polygon has zero area", id);
+    for (int i = 0; i < nv; i++) {
+        int j = (i + 1) % nv;
+        if (bl_v2_norm(bl_v2_sub(v[i], v[j])) <= 1e-12 * size)
+            return bl_error_set(err, "block %d: vertex %d repeats vertex %d; list each corner "
+                                     "once (the polygon closes itself)",
+                                id, i > j ? i + 1 : j + 1, i > j ? j + 1 : i + 1);
+    }
     int ei, ej;
     if (bl_polygon_self_intersection(v, nv, 1e-12 * size, &ei, &ej))
         return bl_error_set(err, "block %d: polygon is self-intersecting (edges %d and %d)",

@@ -25,6 +25,8 @@ check "script arguments" test "$out" = "$(printf '2\ta\tb\ntrue')"
 out=$(printf 'x = 1 +\n2\nx * 10\nfor i = 1, 2 do\nprint(i)\nend\n' | "$bin")
 check "piped input: multi-line statements and expression values, no prompts" \
   test "$out" = "$(printf '30\n1\n2')"
+out=$(printf 'math.max(1,\n5)\nt = {\n7}\nt[1]\n' | "$bin")
+check "piped input: an expression over two lines prints its value" test "$out" = "$(printf '5\n7')"
 out=$(printf 'model{ mu = -1 }\nprint("alive")\n' | "$bin" 2>"$tmp/err")
 check "piped input: an error does not end the session" test "$out" = alive
 check "piped input: the error names the function and field" grep -q "model: field 'mu'" "$tmp/err"

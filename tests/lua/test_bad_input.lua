@@ -32,6 +32,10 @@ local bad = {
     "block", "unknown field 'weight'" },
   { "block", function() block { vertices = { { 0, 0 }, { 1, 1 }, { 1, 0 }, { 0, 1 } } } end,
     "block", "self-intersecting" },
+  { "block", function() block { vertices = { { 0, 1 }, { 1, 1 }, { 1, 2 }, { 0, 1 } } } end,
+    "block", "vertex 4 repeats vertex 1", "once" },
+  { "block", function() block { vertices = { { 0, 1 }, { 1, 1 }, { 1, 1 }, { 1, 2 } } } end,
+    "block", "vertex 3 repeats vertex 2" },
   { "block", function() block { vertices = { { 0, 0 }, { 1, 0 }, { 2, 0 } } } end,
     "block", "zero area" },
   { "block", function() block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 } }, density = -1 } end,
@@ -81,16 +85,40 @@ local bad = {
   { "wall", function() wall { courses = { { 1, "a" } } } end, "wall", "'courses'" },
   { "wall", function() wall { courses = { { 1 } }, unit = { 0.4 } } end, "wall", "'unit'" },
   { "wall", function() wall { coarses = {} } end, "wall", "unknown field 'coarses'" },
+  { "wall", function() wall { courses = { { 1 } }, base = "no" } end, "wall", "'base'", "true or false" },
+  { "wall", function() wall { courses = { { -1, -1 } } } end, "wall", "'courses'", "no block" },
+  { "wall", function() wall { courses = { { 1 } }, origin = { 0 / 0, 1 } } end, "wall", "'origin'" },
+  { "wall", function() wall { courses = { { 1 } }, density = 0 / 0 } end, "wall", "'density'" },
   { "arch", function() arch { n = 0, radius = 1, thickness = 0.1 } end, "arch", "'n'" },
+  { "arch", function() arch { n = 1, radius = 1, thickness = 0.1 } end, "arch", "'n'", "180 degrees" },
+  { "arch", function() arch { n = 3, radius = 1, thickness = 0.1, centre = { 0 } } end, "arch", "'centre'" },
+  { "arch", function() arch { n = 8, radius = 1, thickness = 0.1, angle = 360 } end, "arch", "'angle'",
+    "springings" },
+  { "arch", function() arch { n = 5, radius = 1, thickness = 0.1, density = -1 } end, "arch", "'density'" },
+  { "compare", function() compare { methods = { { method = "assoc", label = 5 } } } end, "compare",
+    "'label'", "string" },
   { "arch", function() arch { n = 5, thickness = 0.1 } end, "arch", "'radius'" },
   { "arch", function() arch { n = 5, radius = 1, thickness = -0.1 } end, "arch", "'thickness'" },
 }
 for i, case in ipairs(bad) do
   T.raises(case[2], ("%s rejects bad input %d"):format(case[1], i), table.unpack(case, 3))
+  -- the message begins with the command (after the caller's place, if
+  -- any), never with a place inside blocklim's own Lua files
+  local _, msg = pcall(case[2])
+  msg = tostring(msg)
+  T.ok(not msg:find("[blocklim", 1, true) and msg:gsub("^[^:]*:%d+: ", ""):sub(1, #case[3]) == case[3],
+       ("%s case %d: the message begins with '%s': %s"):format(case[1], i, case[3], msg))
   load { live = "horizontal" } -- undo the one case that clears the live load first
   if case[1] ~= "model" then same(("%s case %d"):format(case[1], i)) end
 end
 T.ok(current() == m, "a rejected model{} does not replace the current model")
+
+-- An empty model: stats() counts nothing, solve{} says there are no blocks.
+local empty = model {}
+T.ok(stats().blocks == 0 and stats().supports == 0 and stats().interfaces == 0,
+     "stats() of a model without blocks: 0 blocks, 0 supports, 0 interfaces")
+T.raises(function() solve {} end, "solve{} without blocks", "solve: the model has no blocks")
+T.ok(current() == empty, "the empty model is still current")
 T.eq(m:contacts(), 1, "m:contacts() without a table")
 T.eq(m:solve().alpha, before, "m:solve() without a table")
 T.done()
