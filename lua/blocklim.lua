@@ -13,6 +13,18 @@ return function(core)
     local r = solve(m, t)
     return report.wrap(r)
   end
+  -- stats() prints as one line at the prompt.
+  local Stats = { __tostring = function(st)
+    local function n(k, word)
+      return ("%d %s%s"):format(st[k], word, st[k] == 1 and "" or "s")
+    end
+    return ("%s, %s, %s (%dD); size %.4g, tol %.3g, gap %.3g"):format(n("blocks", "free block"),
+      n("supports", "support"), n("interfaces", "interface"), st.dim, st.size, st.tol, st.gap)
+  end }
+  local stats = methods.stats
+  function methods.stats(m)
+    return setmetatable(stats(m), Stats)
+  end
   report.draw = core.draw
   report.vtk = core.vtk
 

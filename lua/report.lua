@@ -54,7 +54,11 @@ function Result.__tostring(r)
     local paths = #r.starts - (went_on and 1 or 0)
     if r.assoc_is_solution then
       say("  (with unlimited friction alpha is the same: the associative answer is itself a")
-      say("  non-associative solution; starts = K looks for lower ones)")
+      if paths > 1 then
+        say("  non-associative solution; %d restarts looked for lower ones)", paths - 1)
+      else
+        say("  non-associative solution; starts = K looks for lower ones)")
+      end
     elseif paths > 1 then
       say("  (%d starts, each another path to a solution, %d certified%s)", paths, certified,
           r.certified and "; alpha is the lowest" or "")
@@ -141,6 +145,9 @@ end
 
 local function picture(fmt)
   return function(r, file, opts)
+    if type(r) ~= "table" or r._solution == nil then
+      error(("%s: call it on a result with a colon: r:%s(file)"):format(fmt, fmt), 2)
+    end
     if type(file) ~= "string" then
       error(("%s: expects a file name, got %s"):format(fmt, type(file)), 2)
     end
@@ -177,6 +184,7 @@ Result.png = picture("png")
 
 -- r:vtk(file): a 3D result for ParaView (src/vtk.h says what it holds).
 function Result.vtk(r, file)
+  if type(r) ~= "table" or r._solution == nil then error("vtk: call it on a result with a colon: r:vtk(file)", 2) end
   if type(file) ~= "string" then error(("vtk: expects a file name, got %s"):format(type(file)), 2) end
   report.vtk(r._solution, file)
 end

@@ -243,7 +243,9 @@ static double legend(cairo_t *cr, const pic *P, double x, double y, int draw)
     for (int i = 0; i < 3; i++) {
         if (draw) {
             bl_vec2 a = bl_v2(x, mid), b = bl_v2(x + sample, mid);
-            if (i == 0) hinge_dot(cr, P->unit, bl_v2(x + 0.5 * sample, mid));
+            /* 3D hinges are mostly edges, drawn as lines */
+            if (i == 0 && P->m && P->m->dim == 3) hinge_line(cr, P->unit, a, b);
+            else if (i == 0) hinge_dot(cr, P->unit, bl_v2(x + 0.5 * sample, mid));
             if (i == 1) sliding_line(cr, P->unit, a, b);
             if (i == 2) separating_line(cr, P->unit, a, b);
         }

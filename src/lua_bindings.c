@@ -206,16 +206,25 @@ static int choice_field(lua_State *L, int idx, const char *fn, const char *f,
 
 static bl_model *check_model(lua_State *L, int idx)
 {
-    bl_model **p = luaL_checkudata(L, idx, MODEL_MT);
+    bl_model **p = luaL_testudata(L, idx, MODEL_MT);
+    if (!p) { /* m.solve{...} for m:solve{...} */
+        lua_Debug ar;
+        const char *name = lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name
+                               ? ar.name : "model method";
+        fail(L, "%s: expects a model, got %s; call it with a colon: m:%s{...}", name,
+             luaL_typename(L, idx), name);
+    }
     return *p;
 }
 
 /* A block number given by the user (1-based) -> index. */
 static int block_index(lua_State *L, bl_model *m, int idx, const char *fn, const char *what)
 {
-    if (!lua_isinteger(L, idx))
-        fail(L, "%s: %s must be a block number, got %s", fn, what, luaL_typename(L, idx));
-    lua_Integer b = lua_tointeger(L, idx);
+    int whole;
+    lua_Integer b = lua_tointegerx(L, idx, &whole); /* 2.0 counts as 2 */
+    if (!whole && lua_type(L, idx) == LUA_TNUMBER)
+        fail(L, "%s: %s must be a whole block number, got %g", fn, what, lua_tonumber(L, idx));
+    if (!whole) fail(L, "%s: %s must be a block number, got %s", fn, what, luaL_typename(L, idx));
     if (b < 1 || b > m->nblocks)
         fail(L, "%s: %s is block %d, but the model has blocks 1 to %d", fn, what, (int)b,
                    m->nblocks);
@@ -647,7 +656,8 @@ static int load_3d(lua_State *L, bl_model *m)
     }
     bl_vec3 dir = m->live_dir3;
     if (field(L, 2, "direction")) {
-        if (kinds[1] != 0) fail(L, "load: field 'direction' goes with live = \"horizontal\"");
+        if (kinds[1] != 0 && !(kinds[1] == -1 && m->live_weight))
+            fail(L, "load: field 'direction' goes with live = \"horizontal\"");
         if (lua_istable(L, -1) && lua_rawlen(L, -1) == 2) {
             bl_vec2 d = to_point(L, "load", "field 'direction'");
             dir = bl_v3(d.x, d.y, 0.0);
@@ -657,7 +667,7 @@ static int load_3d(lua_State *L, bl_model *m)
         if (bl_v3_norm(dir) == 0) fail(L, "load: field 'direction' must be a non-zero vector");
     }
     apply_loads(L, m, kinds, pl);
-    if (kinds[1] == 0) m->live_dir3 = bl_v3_scale(dir, 1.0 / bl_v3_norm(dir));
+    if (kinds[1] == 0 || field_given(L, 2, "direction")) m->live_dir3 = bl_v3_scale(dir, 1.0 / bl_v3_norm(dir));
     if (!isnan(tilt)) {
         m->tilt = tilt * M_PI / 180.0;
         m->tilt_axis = axis;
@@ -711,7 +721,7 @@ static int model_load(lua_State *L)
     int has_dir = point_field(L, 2, "load", "direction", &dir);
     if (has_dir && bl_v2_norm(dir) == 0)
         return fail(L, "load: field 'direction' must be a non-zero vector");
-    if (has_dir && kinds[1] != 0)
+    if (has_dir && kinds[1] != 0 && !(kinds[1] == -1 && m->live_weight))
         return fail(L, "load: field 'direction' goes with live = \"horizontal\"");
     double tilt = number_field(L, 2, "load", "tilt", NAN, ANY);
     if (!isnan(tilt) && !(fabs(tilt) < 90))
@@ -719,7 +729,7 @@ static int model_load(lua_State *L)
     if (field_given(L, 2, "axis")) return fail(L, "load: field 'axis' is for 3D models");
 
     apply_loads(L, m, kinds, pl);
-    if (kinds[1] == 0) m->live_dir = bl_v2_scale(dir, 1.0 / bl_v2_norm(dir));
+    if (has_dir) m->live_dir = bl_v2_scale(dir, 1.0 / bl_v2_norm(dir));
     if (!isnan(tilt)) m->tilt = tilt * M_PI / 180.0;
     return 0;
 }
@@ -1064,7 +1074,6 @@ static int model_solve(lua_State *L)
     bl_model *m = check_model(L, 1);
     opt_table(L, 2);
     check_fields(L, 2, "solve", fields, 0);
-    if (m->nblocks == 0) fail(L, "solve: the model has no blocks; add them with block{}, wall{} or arch{}");
     /* By default, the non-associative answer (the associative one beside
      * it) wherever a joint has finite friction.  assoc and seqlp each solve
      * one flow rule, mpec either. */
@@ -1092,7 +1101,7 @@ static int model_solve(lua_State *L)
     if (so.beta > 1) fail(L, "solve: field 'beta' must be in (0, 1], got %g", so.beta);
     so.settle = number_field(L, 2, "solve", "settle", so.settle, POSITIVE);
     so.slip = number_field(L, 2, "solve", "slip", so.slip, POSITIVE);
-    double cap = number_field(L, 2, "solve", "lps", so.max_lps, POSITIVE);
+    double cap = number_field(L, 2, "solve", "lps", so.max_lps, ANY);
     if (cap != floor(cap) || cap < 2 || cap > 1e6)
         fail(L, "solve: field 'lps' must be an integer of at least 2, got %g", cap);
     so.max_lps = (int)cap;
@@ -1158,6 +1167,7 @@ static int model_solve(lua_State *L)
         mo.iterations = (int)iters; /* Ipopt's cap; the start's LP keeps its own */
         o.iterations = 0;
     }
+    if (m->nblocks == 0) fail(L, "solve: the model has no blocks; add them with block{}, wall{} or arch{}");
 
     bl_solution **box = lua_newuserdatauv(L, sizeof *box, 0);
     *box = NULL;

@@ -372,6 +372,8 @@ static int collect_completions(lua_State *L)
     for (p = text; *p; p++)
         if (*p == '.' || *p == ':')
             sep = p;
+    if (sep == text)   /* after a call, "current():", the value is unknown */
+        return 0;
     lua_pushglobaltable(L);
     if (sep == NULL) {
         partial = text;

@@ -122,6 +122,13 @@ LUA
   sleep 0.5
   tmux send-keys -t "$s" 'print("after", 1 + 1)' Enter
   sleep 1
+  # Tab completes a field of a known table, and offers nothing after a call
+  tmux send-keys -t "$s" 'stats():' Tab Tab
+  sleep 0.5
+  tmux send-keys -t "$s" C-u 'print(string.up' Tab
+  sleep 0.3
+  tmux send-keys -t "$s" '("completed"))' Enter
+  sleep 1
   screen=$(tmux capture-pane -p -t "$s")
   tmux kill-session -t "$s" 2>/dev/null
   check "Ctrl-C stops a solve by either engine and returns to the prompt" \
@@ -130,6 +137,8 @@ LUA
     grep -qE 'blocks[[:space:]]+10050' <<<"$screen"
   check "Ctrl-C at the continuation prompt drops the unfinished chunk" \
     bash -c 'grep -qE "^after[[:space:]]+2" <<<"$1" && ! grep -qE "^inside" <<<"$1"' _ "$screen"
+  check "Tab completes string.up to string.upper, and offers no globals after a call's colon" \
+    bash -c 'grep -q "^COMPLETED" <<<"$1" && ! grep -q ":dofile" <<<"$1"' _ "$screen"
 
   # Ctrl-C during a long sequence of LPs (W4 with very many restarts): the
   # chunk stops, and the lowest certified answer so far is kept in last().

@@ -46,6 +46,9 @@ local bad = {
   { "interface", function() interface { 1, 9, mu = 0.1 } end, "interface", "entry 2" },
   { "interface", function() interface { 1, 2, muu = 0.1 } end, "interface", "unknown field 'muu'" },
   { "interface", function() interface { 1, 2 } end, "interface", "'mu'" },
+  { "interface", function() interface { 1.5, 2, mu = 1 } end, "interface", "entry 1", "whole block number" },
+  { "solve", function() m.solve {} end, "solve", "expects a model", "m:solve{...}" },
+  { "solve", function() solve { lps = 0 } end, "solve", "'lps'", "at least 2" },
   { "interface", function() interface { 1, 2, model = "resultant" } end, "interface", "'model'",
     "3D models" },
   { "interface", function() interface { 1, 3, mu = 0.2 } end, "interface",
@@ -113,11 +116,19 @@ for i, case in ipairs(bad) do
 end
 T.ok(current() == m, "a rejected model{} does not replace the current model")
 
+-- A method called with a dot; a block number written as a float.
+local r0 = m:solve {}
+T.raises(function() r0.png("x.png") end, "r.png(file) with a dot", "png: call it on a result with a colon")
+T.eq(m:interface { 1.0, 2.0, mu = 0.5 }, nil, "interface{ 1.0, 2.0 }: whole floats are block numbers")
+T.eq(m:solve {}.alpha, before, "interface{ 1.0, 2.0, mu = 0.5 } sets the model's own mu: the same alpha")
+
 -- An empty model: stats() counts nothing, solve{} says there are no blocks.
 local empty = model {}
 T.ok(stats().blocks == 0 and stats().supports == 0 and stats().interfaces == 0,
      "stats() of a model without blocks: 0 blocks, 0 supports, 0 interfaces")
 T.raises(function() solve {} end, "solve{} without blocks", "solve: the model has no blocks")
+T.eq(tostring(stats()), "0 free blocks, 0 supports, 0 interfaces (2D); size 0, tol 0, gap 0",
+     "stats() prints as one line")
 T.ok(current() == empty, "the empty model is still current")
 T.eq(m:contacts(), 1, "m:contacts() without a table")
 T.eq(m:solve().alpha, before, "m:solve() without a table")

@@ -74,4 +74,13 @@ for _, y in ipairs { 0.2, 0.5, 1.0 } do
          ("point load at height %g: alpha = min(W b / (2 F y), mu W / F)"):format(y))
 end
 
+-- The weight-proportional live load turned 45 degrees up, by load{ direction }
+-- alone (the horizontal live load is on by default): a 1 x 2 block, mu = 5,
+-- rocks about its right toe when alpha (W / sqrt 2) (h/2 + b/2) = W b / 2,
+-- alpha = sqrt(2) / 3.
+column(1.0, 2.0, 1, { mu = 5 })
+load { direction = { 1, 1 } }
+T.near(solve { flow = "associative" }.alpha, math.sqrt(2) / 3, 1e-9,
+       "load{ direction = {1, 1} } alone: alpha = sqrt(2) / 3")
+
 T.done()
