@@ -650,6 +650,8 @@ static int load_3d(lua_State *L, bl_model *m)
         }
         if (field(L, t, "force")) pl[k].force3 = to_point3(L, fn, "field 'force'");
         if (field(L, t, "moment")) pl[k].moment3 = to_point3(L, fn, "field 'moment'");
+        if (bl_v3_norm(pl[k].force3) == 0 && bl_v3_norm(pl[k].moment3) == 0)
+            fail(L, "%s: fields 'force' and 'moment' are zero", fn);
         pl[k].live = k;
         kinds[k] = 2;
         lua_pop(L, 1);
@@ -704,6 +706,7 @@ static int model_load(lua_State *L)
                 fail(L, "%s: field 'at' is missing (the point {x, y} where it acts)", fn);
             if (!point_field(L, t, fn, "force", &pl[k].force))
                 fail(L, "%s: field 'force' is missing ({fx, fy})", fn);
+            if (bl_v2_norm(pl[k].force) == 0) fail(L, "%s: field 'force' is zero", fn);
             const bl_block *bk = &m->blocks[pl[k].block];
             double tol = 1e-9 * hypot(bk->box[2] - bk->box[0], bk->box[3] - bk->box[1]);
             if (bl_polygon_depth(bk->v, bk->nv, pl[k].at) < -tol)

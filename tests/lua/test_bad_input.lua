@@ -64,6 +64,8 @@ local bad = {
   { "load", function() load { live = { block = 2, at = { 0, 0 }, force = { 1, 0 } } } end,
     "load live", "support" },
   { "load", function() load { tilt = "steep" } end, "load", "'tilt'" },
+  { "load", function() load { live = { block = 1, at = { 0.5, 0.5 }, force = { 0, 0 } } } end,
+    "load live", "'force' is zero" },
   { "load", function() load { live = { block = 1, at = { 5, 5 }, force = { 1, 0 } } } end,
     "load live", "'at'", "outside block 1" },
   { "load", function() load() end, "load", "expects a table" },
