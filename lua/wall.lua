@@ -29,12 +29,12 @@ return function(M)
       fail("field 'courses' must be a non-empty list of course patterns")
     end
     local function finite(v) return type(v) == "number" and v == v and math.abs(v) < math.huge end
-    if type(unit) ~= "table" or not finite(unit[1]) or not finite(unit[2])
+    if type(unit) ~= "table" or #unit ~= 2 or not finite(unit[1]) or not finite(unit[2])
         or not (unit[1] > 0 and unit[2] > 0) then
       fail("field 'unit' must be {L, H} with two positive numbers")
     end
     local origin = t.origin or { 0, 0 }
-    if type(origin) ~= "table" or not finite(origin[1]) or not finite(origin[2]) then
+    if type(origin) ~= "table" or #origin ~= 2 or not finite(origin[1]) or not finite(origin[2]) then
       fail("field 'origin' must be a point {x, y} of two finite numbers")
     end
     if t.base ~= nil and type(t.base) ~= "boolean" then

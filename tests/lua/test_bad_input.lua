@@ -89,6 +89,7 @@ local bad = {
     "nonassociative" },
   { "wall", function() wall { courses = { { 1, "a" } } } end, "wall", "'courses'" },
   { "wall", function() wall { courses = { { 1 } }, unit = { 0.4 } } end, "wall", "'unit'" },
+  { "wall", function() wall { courses = { { 1 } }, unit = { 0.4, 0.1, 9 } } end, "wall", "'unit'" },
   { "wall", function() wall { coarses = {} } end, "wall", "unknown field 'coarses'" },
   { "wall", function() wall { courses = { { 1 } }, base = "no" } end, "wall", "'base'", "true or false" },
   { "wall", function() wall { courses = { { -1, -1 } } } end, "wall", "'courses'", "no block" },
