@@ -141,8 +141,11 @@ static bl_lp_status solve(void *e)
     case 1: return BL_LP_INFEASIBLE;
     case 2: return BL_LP_UNBOUNDED;
     case 3:
-        return lp->model.numberIterations() < lp->model.maximumIterations() ? BL_LP_TIME_LIMIT
-                                                                           : BL_LP_ITERATION_LIMIT;
+        // stopped on its iteration cap, on the time limit, or (with neither
+        // reached, and none set: a dome at mu = 0.4) on numerical trouble
+        if (lp->model.numberIterations() >= lp->model.maximumIterations())
+            return BL_LP_ITERATION_LIMIT;
+        return lp->model.maximumSeconds() > 0.0 ? BL_LP_TIME_LIMIT : BL_LP_FAILED;
     case 5: return BL_LP_INTERRUPTED;
     default: return BL_LP_FAILED;
     }

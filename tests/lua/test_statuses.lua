@@ -48,4 +48,12 @@ for _, lp in ipairs { "simplex", "ipm" } do
   T.eq(r.status, "iteration limit", lp .. ": 3 iterations on W4: status iteration limit")
   T.ok(not r.verified and r.residuals == nil, lp .. ": iteration limit: no answer claimed")
 end
+
+-- A time limit far below what the simplex needs on a wall of 420 blocks
+-- (about 0.1 s) stops it with that status, and only when one was given.
+model { mu = 0.65 }
+wall { courses = require("walls").running_bond(20), unit = { 0.4, 0.175 } }
+r = solve { flow = "associative", lp = "simplex", time_limit = 1e-3 }
+T.eq(r.status, "time limit", "simplex, 0.001 s on 420 blocks: status time limit")
+T.eq(solve { flow = "associative", lp = "simplex" }.status, "optimal", "simplex, no time limit: optimal")
 T.done()
