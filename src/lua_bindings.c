@@ -1233,6 +1233,8 @@ static int core_draw(lua_State *L)
     const char *fmt = luaL_checkstring(L, 3);
     int width = (int)luaL_optinteger(L, 4, 0);
     bl_view view = {luaL_optnumber(L, 5, BL_VIEW_AZIMUTH), luaL_optnumber(L, 6, BL_VIEW_ELEVATION)};
+    if (!lua_isnoneornil(L, 5) && (*p)->model && (*p)->model->dim == 2)
+        return fail(L, "%s: field 'view' is for 3D results; a 2D model is drawn in its plane", fmt);
     bl_error err;
     int rc = strcmp(fmt, "svg") == 0 ? bl_draw_svg(*p, file, width, &view, &err)
                                      : bl_draw_png(*p, file, width, &view, &err);

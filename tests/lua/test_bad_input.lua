@@ -122,6 +122,8 @@ T.ok(current() == m, "a rejected model{} does not replace the current model")
 -- A method called with a dot; a block number written as a float.
 local r0 = m:solve {}
 T.raises(function() r0.png("x.png") end, "r.png(file) with a dot", "png: call it on a result with a colon")
+T.raises(function() r0:svg("/nonexistent/x.svg", { view = "top" }) end, "a view of a 2D result",
+         "svg: field 'view' is for 3D results")
 T.eq(m:interface { 1.0, 2.0, mu = 0.5 }, nil, "interface{ 1.0, 2.0 }: whole floats are block numbers")
 T.eq(m:solve {}.alpha, before, "interface{ 1.0, 2.0, mu = 0.5 } sets the model's own mu: the same alpha")
 
