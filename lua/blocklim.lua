@@ -15,9 +15,7 @@ return function(core)
   end
   -- stats() prints as one line at the prompt.
   local Stats = { __tostring = function(st)
-    local function n(k, word)
-      return ("%d %s%s"):format(st[k], word, st[k] == 1 and "" or "s")
-    end
+    local function n(k, word) return ("%d %s%s"):format(st[k], word, report.plural(st[k])) end
     return ("%s, %s, %s (%dD); size %.4g, tol %.3g, gap %.3g"):format(n("blocks", "free block"),
       n("supports", "support"), n("interfaces", "interface"), st.dim, st.size, st.tol, st.gap)
   end }

@@ -2,6 +2,10 @@
 local report = {}
 
 local Result = {}
+
+-- "s" for a count other than one: "1 block", "2 blocks".
+function report.plural(n) return n == 1 and "" or "s" end
+local plural = report.plural
 report.Result = Result
 
 Result.__index = Result
@@ -113,7 +117,6 @@ function Result.__tostring(r)
     say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
         r.lp, r.iterations, size.rows, size.columns)
   end
-  local function plural(n) return n == 1 and "" or "s" end
   local line = ("  %d block%s, %d support%s, %d interface%s"):format(size.blocks, plural(size.blocks),
     size.supports, plural(size.supports), size.interfaces, plural(size.interfaces))
   if r.states then
@@ -213,7 +216,7 @@ function Blocks.__tostring(list)
     parts[#parts + 1] = i == j and tostring(list[i]) or ("%d-%d"):format(list[i], list[j])
     i = j + 1
   end
-  return ("%d block%s: %s"):format(#list, #list == 1 and "" or "s", table.concat(parts, ", "))
+  return ("%d block%s: %s"):format(#list, plural(#list), table.concat(parts, ", "))
 end
 function report.blocks(list) return setmetatable(list, Blocks) end
 

@@ -547,8 +547,8 @@ static int compile_as_return(lua_State *L)
  * error message on the stack.  A line is first tried as an expression, so
  * its values get printed; otherwise lines accumulate while the only
  * complaint is a premature end of input, each time tried as an expression
- * first too (a wall{...} typed over several lines prints its blocks).  Returns CHUNK_EOF, with nothing
- * pushed, at end of input. */
+ * first too (a wall{...} typed over several lines prints its blocks).
+ * Returns CHUNK_EOF, with nothing pushed, at end of input. */
 static int read_chunk(lua_State *L, int interactive)
 {
     char *line;
