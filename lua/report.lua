@@ -26,6 +26,14 @@ function Result.__tostring(r)
     say("no alpha  (%s)", r.status)
   end
   say("  %s", r.message)
+  if r.status == "unstable" and r.alpha < 0 then
+    say("  (it needs %.6g times the live load, reversed, to stand)", -r.alpha)
+  elseif r.alpha_min then
+    say("  (alpha = 0 has no equilibrium: only a live load from alpha = %.6g to %.6g holds it up)",
+        r.alpha_min, r.alpha)
+  elseif r.status == "optimal" and r.stands == nil then
+    say("  (whether the dead load alone has an equilibrium was not decided: its LP stopped short)")
+  end
   if r.note and (not r.certified or r.interrupted) then say("  %s", r.note) end
   if r.alpha_assoc then
     say("  associative alpha = %.6g%s; %d LPs in the sequence%s", r.alpha_assoc,
@@ -141,8 +149,9 @@ function Result.__tostring(r)
     end
   end
   local t = r.timings
-  say("  time %.3f s: detection %.3f, assembly %.3f, solve %.3f, verification %.3f", t.total,
-      t.detection, t.assembly, t.solve, t.verification)
+  say("  time %.3f s: detection %.3f, assembly %.3f, solve %.3f, verification %.3f%s", t.total,
+      t.detection, t.assembly, t.solve, t.verification,
+      t.stands > 0 and (", dead load %.3f"):format(t.stands) or "")
   return table.concat(out, "\n")
 end
 

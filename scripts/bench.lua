@@ -30,8 +30,8 @@ local r = engine == "seqlp" and solve { flow = "nonassociative", time_limit = li
 local t = r.timings
 print(("method=%s dim=%d n=%s blocks=%d interfaces=%d rows=%d columns=%d lp=%s lps=%d iterations=%d factor_nnz=%.0f status=%s "
   .. "alpha=%.8g verified=%s generate=%.3f detection=%.3f assembly=%.3f solve=%.3f "
-  .. "verification=%.3f total=%.3f")
+  .. "verification=%.3f stands=%.3f total=%.3f")
   :format(r.method, three and 3 or 2, arg[2], r.size.blocks, r.size.interfaces, r.size.rows, r.size.columns, r.lp, r.lps or 1, r.iterations,
           r.size.factor_nnz,
           r.status:gsub(" ", "_"), r.alpha, tostring(r.verified), t1 - t0, t.detection,
-          t.assembly, t.solve, t.verification, t1 - t0 + t.total))
+          t.assembly, t.solve, t.verification, t.stands, t1 - t0 + t.total))

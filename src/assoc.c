@@ -1,6 +1,7 @@
 #include "assoc.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -22,6 +23,7 @@ void bl_solve_options_default(bl_solve_options *o)
     o->early_infeasible = 0;
     o->lp_tolerance = 0;
     o->weighted = 1;
+    o->dead_load = BL_DEAD_BESIDE;
 }
 
 bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const double *obj,
@@ -40,6 +42,83 @@ bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const
     bl_lp_problem p = {s->nrows, s->ncols, s->colptr, s->rowind, s->val,
                        lo,       hi,       s->rhs,    obj ? obj : s->obj};
     return bl_lp_create(&p, &ls, err);
+}
+
+/* The dead-load check (doc/theory.md 8): the LP of a system with alpha
+ * fixed at 0.  Its objective is gone with alpha's column, so it asks only
+ * whether the dead load alone has an equilibrium within the yield
+ * conditions; fixed, alpha's dense column also stays out of the interior
+ * point's normal matrix, which made a bounded alpha several times slower
+ * per iteration.  Cold, since a warm start from the answer at the top of
+ * the interval took the interior point more iterations, not fewer.  Its
+ * LP is made on the calling thread, only solved beside: two interior
+ * points analysed at once (CHOLMOD, METIS, the thread settings) changed
+ * the round-off of the answer from run to run. */
+typedef struct dead_check {
+    bl_lp *lp;
+    bl_lp_status status;
+    double seconds;
+    pthread_t thread;
+    int beside, started;
+} dead_check;
+
+static void *dead_run(void *arg)
+{
+    dead_check *c = arg;
+    double t0 = bl_clock();
+    c->status = c->lp ? bl_lp_solve(c->lp) : BL_LP_FAILED;
+    c->seconds = bl_clock() - t0;
+    return NULL;
+}
+
+/* Starts the check of sys, on a thread of its own when beside; without a
+ * dead load it holds at once (no forces at all are an equilibrium). */
+static void dead_start(dead_check *c, const bl_system *sys, const bl_solve_options *o, int beside)
+{
+    c->started = 1;
+    c->status = BL_LP_OPTIMAL;
+    int loaded = 0;
+    for (int i = 0; i < sys->nrows; i++) loaded |= sys->rhs[i] != 0.0;
+    if (!loaded) return;
+    size_t n = (size_t)sys->ncols;
+    double *lo = malloc(n * sizeof *lo), *hi = malloc(n * sizeof *hi);
+    bl_solve_options q = *o;
+    q.mps = NULL;
+    bl_error err;
+    if (lo && hi) {
+        memcpy(lo, sys->lo, n * sizeof *lo);
+        memcpy(hi, sys->hi, n * sizeof *hi);
+        lo[sys->nforce] = hi[sys->nforce] = 0.0;
+        c->lp = bl_solve_lp(sys, lo, hi, NULL, &q, &err);
+    }
+    free(lo);
+    free(hi);
+    if (beside) c->beside = pthread_create(&c->thread, NULL, dead_run, c) == 0;
+    if (!c->beside) dead_run(c);
+}
+
+static void dead_finish(dead_check *c)
+{
+    if (c->beside) pthread_join(c->thread, NULL);
+    c->beside = 0;
+    bl_lp_free(c->lp);
+    c->lp = NULL;
+}
+
+/* Where alpha = 0 has no equilibrium: the least alpha that has one (the
+ * bottom of the interval whose top the solve found), or NAN. */
+static double alpha_min(const bl_system *sys, const bl_solve_options *o)
+{
+    double *obj = calloc((size_t)sys->ncols, sizeof *obj), a = NAN;
+    bl_error err;
+    bl_solve_options q = *o;
+    q.mps = NULL;
+    if (obj) obj[sys->nforce] = -1.0;
+    bl_lp *lp = obj ? bl_solve_lp(sys, sys->lo, sys->hi, obj, &q, &err) : NULL;
+    if (lp && bl_lp_solve(lp) == BL_LP_OPTIMAL) a = bl_lp_primal(lp)[sys->nforce];
+    bl_lp_free(lp);
+    free(obj);
+    return a;
 }
 
 int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl_error *err)
@@ -77,11 +156,16 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     bl_system *sys = NULL;
     bl_lp *lp = NULL;
     bl_lp_status st = BL_LP_FAILED;
+    dead_check dead = {0};
     double t2 = bl_clock(), t3 = t2, prev = NAN, solve_time = 0.0;
     int lost = 0; /* iterations of LPs solved again */
     for (int round = 1;; round++) {
         sys = m->dim == 3 ? bl_system_build3(m, &cone, BL_FRICTION_CONE, err) : bl_system_build(m, BL_FRICTION_CONE, err);
         if (!sys) break;
+        /* one round: the check can run beside the LP from the start */
+        if (!extra && o->dead_load == BL_DEAD_BESIDE && !o->verbose &&
+            bl_lp_leaves_core(o->lp, o->threads, sys->nrows, sys->ncols))
+            dead_start(&dead, sys, o, 1);
         bl_lp_problem p = {sys->nrows, sys->ncols, sys->colptr, sys->rowind, sys->val,
                            sys->lo,    sys->hi,    sys->rhs,    sys->obj};
         lp = o->mps && bl_lp_write_mps(&p, o->mps, err) ? NULL
@@ -132,6 +216,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     free(extra_n);
     free(slip);
     if (!lp) {
+        dead_finish(&dead);
         bl_system_free(sys);
         bl_solution_free(s);
         return -1;
@@ -148,7 +233,8 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     if (st == BL_LP_OPTIMAL) {
         const double *x = bl_lp_primal(lp), *y = bl_lp_dual(lp);
         s->alpha = x[sys->nforce];
-        if (s->alpha < 0.0) s->status = BL_UNSTABLE;
+        if (s->alpha < 0.0) s->stands = 0; /* the interval lies below 0 */
+        s->status = bl_status_of_answer(s);
         s->has_mechanism = 1;
         if (sys->dim == 3) {
             bl_system_forces3(sys, x, s->force);
@@ -160,6 +246,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         bl_solution_classify(s);
         s->verified = bl_verify(sys, s->alpha, x, y, o->tolerance, &s->res);
         if (bl_solution_keep(s, x, sys->ncols, y, sys->nrows)) {
+            dead_finish(&dead);
             bl_lp_free(lp);
             bl_system_free(sys);
             bl_solution_free(s);
@@ -167,12 +254,36 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         }
     }
     double t4 = bl_clock();
+    bl_lp_free(lp);
+    if (s->status == BL_OPTIMAL && o->dead_load != BL_DEAD_NONE) {
+        /* 3D with the adaptive cone: its edges follow the slip at the top
+         * of the interval; the circumscribed pyramid holds more friction
+         * than the cone, so that no equilibrium on it is none on the cone */
+        bl_system *check = sys;
+        bl_cone around = {.facets = o->cone.facets, .circumscribed = 1};
+        if (m->dim == 3 && o->cone.adaptive && !dead.started)
+            check = bl_system_build3(m, &around, BL_FRICTION_CONE, err);
+        if (!check) {
+            bl_system_free(sys);
+            bl_solution_free(s);
+            return -1;
+        }
+        if (!dead.started) dead_start(&dead, check, o, 0);
+        dead_finish(&dead);
+        s->stands = dead.status == BL_LP_OPTIMAL ? 1 : dead.status == BL_LP_INFEASIBLE ? 0 : -1;
+        double ta = bl_clock();
+        if (s->stands == 0) s->alpha_min = alpha_min(check, o);
+        if (check != sys) bl_system_free(check);
+        s->status = bl_status_of_answer(s);
+        s->time.stands = dead.seconds + (bl_clock() - ta);
+    }
+    dead_finish(&dead);
+    double t5 = bl_clock();
     s->time.detection = t1 - t0;
     s->time.assembly = t2 - t1;
     s->time.solve = t3 - t2;
     s->time.verification = t4 - t3;
-    s->time.total = t4 - t0;
-    bl_lp_free(lp);
+    s->time.total = t5 - t0;
     bl_system_free(sys);
     *out = s;
     return 0;

@@ -29,7 +29,15 @@ typedef struct bl_solve_options {
     int weighted;       /* the interior point's weighted path (lp.h); the
                            sequence of LPs and the direct solve leave it
                            off for their own LPs and their start */
+    int dead_load;      /* the check that the dead load alone has an
+                           equilibrium (bl_assoc_solve): BL_DEAD_BESIDE (the
+                           default), BL_DEAD_AFTER or BL_DEAD_NONE; not a
+                           user option */
 } bl_solve_options;
+
+/* When the dead-load check runs: beside the LP on the core it leaves idle
+ * (after it where none is), after it, or not at all. */
+enum { BL_DEAD_NONE, BL_DEAD_AFTER, BL_DEAD_BESIDE };
 
 void bl_solve_options_default(bl_solve_options *o);
 
@@ -40,7 +48,11 @@ bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi,
                    const double *obj, const bl_solve_options *o, bl_error *err);
 
 /* Detects interfaces when needed (which may fail: err says why), assembles,
- * solves and verifies.  On success *out is a new solution whose status may
+ * solves and verifies.  Maximizing alpha finds the top of the interval of
+ * alphas with an equilibrium; one more LP, alpha fixed at 0, tells whether
+ * it holds 0 (s->stands).  Where it does not, the live load holds the
+ * structure up: the status is BL_UNSTABLE and s->alpha_min the bottom of
+ * the interval (doc/theory.md 8).  On success *out is a new solution whose status may
  * be any bl_status: an infeasible model is an answer, not an error. */
 int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl_error *err);
 

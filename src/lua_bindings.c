@@ -871,6 +871,8 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     set_string(L, "status", bl_status_name(s->status));
     set_string(L, "message", bl_status_sentence(s->status));
     set_boolean(L, "verified", s->verified);
+    if (s->stands >= 0) set_boolean(L, "stands", s->stands);
+    if (!isnan(s->alpha_min)) set_number(L, "alpha_min", s->alpha_min);
     set_string(L, "method", s->method);
     set_string(L, "flow", s->flow);
     if (strcmp(s->method, "seqlp") == 0) {
@@ -958,11 +960,12 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     set_number(L, "factor_nnz", s->factor_nnz);
     lua_setfield(L, -2, "size");
 
-    lua_createtable(L, 0, 5);
+    lua_createtable(L, 0, 6);
     set_number(L, "detection", s->time.detection);
     set_number(L, "assembly", s->time.assembly);
     set_number(L, "solve", s->time.solve);
     set_number(L, "verification", s->time.verification);
+    set_number(L, "stands", s->time.stands);
     set_number(L, "total", s->time.total);
     lua_setfield(L, -2, "timings");
 

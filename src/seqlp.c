@@ -964,6 +964,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     detection = bl_clock() - detection;
     path_job pj = {0};
     if (path_start(m, o, &pj, err)) return -1;
+    if (pj.beside) base.dead_load = BL_DEAD_AFTER; /* the path has the other core */
     if (bl_assoc_solve(m, &base, &s, err)) {
         path_free(&pj);
         return -1;
@@ -1093,12 +1094,15 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             /* By default (starts < 0) 10 restarts when unlimited friction
              * gives the associative alpha: start 0 then certifies the
              * associative answer, and restarts found lower ones in every
-             * case measured (doc/seqlp.md: W1, the stack-bond wall), at
-             * 0.05-0.2 s for 10 on small walls; else restarts only while
-             * none has certified (BL_SEQLP_RETRIES). */
-            retry = sliding && o->starts < 0 && !s->assoc_is_solution &&
-                    r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
-            starts = !sliding ? 0 : o->starts >= 0 ? o->starts : s->assoc_is_solution ? 10
+             * case measured (doc/seqlp.md: W1, the stack-bond wall); and
+             * on models of the simplex's size (BL_SEQLP_SEARCH_ROWS), where
+             * start 0 certified up to 21 % above the lowest of 10 restarts
+             * (W4 and W5 loaded the other way) and 10 restarts take a
+             * fraction of a second; else restarts only while none has
+             * certified (BL_SEQLP_RETRIES). */
+            int search = s->assoc_is_solution || r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS;
+            retry = sliding && o->starts < 0 && !search && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
+            starts = !sliding ? 0 : o->starts >= 0 ? o->starts : search ? BL_SEQLP_SEARCH
                                                      : retry ? BL_SEQLP_RETRIES : 0;
         }
     }
@@ -1135,7 +1139,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     if (r.found) {
         s->alpha = r.best_alpha;
         s->alpha_settled = r.best_settled;
-        s->status = s->alpha < 0.0 ? BL_UNSTABLE : BL_OPTIMAL;
+        s->status = bl_status_of_answer(s);
         s->certified = 1;
         if (mc->dim == 3) {
             bl_system_forces3(r.cone, r.best_x, s->force);

@@ -21,7 +21,7 @@ static const char *const status_names[] = {
 
 static const char *const status_sentences[] = {
     [BL_OPTIMAL] = "collapse load multiplier found",
-    [BL_UNSTABLE] = "alpha < 0: the structure cannot stand under its dead load alone",
+    [BL_UNSTABLE] = "the structure cannot stand under its dead load alone",
     [BL_UNBOUNDED] = "no collapse: the live load cannot produce a mechanism, however large",
     [BL_INFEASIBLE] = "no equilibrium for any alpha: the dead and live loads cannot both be carried",
     [BL_ITERATION_LIMIT] = "stopped at the iteration limit before an answer was found",
@@ -69,6 +69,8 @@ bl_solution *bl_solution_new(bl_model *c)
     s->method = "assoc";
     s->flow = "associative";
     s->res.flow = s->res.dilatancy = NAN;
+    s->stands = -1;
+    s->alpha_min = NAN;
     return s;
 }
 
@@ -83,6 +85,11 @@ bl_status bl_status_of_lp(bl_lp_status st)
     case BL_LP_INTERRUPTED: return BL_INTERRUPTED;
     default: return BL_NUMERICAL;
     }
+}
+
+bl_status bl_status_of_answer(const bl_solution *s)
+{
+    return s->alpha < 0.0 || s->stands == 0 ? BL_UNSTABLE : BL_OPTIMAL;
 }
 
 void bl_solution_free(bl_solution *s)

@@ -12,7 +12,8 @@
 
 typedef enum bl_status {
     BL_OPTIMAL,      /* alpha >= 0 found */
-    BL_UNSTABLE,     /* alpha < 0: cannot stand under dead load alone */
+    BL_UNSTABLE,     /* cannot stand under dead load alone: alpha < 0, or
+                        alpha = 0 has no equilibrium (stands = 0) */
     BL_UNBOUNDED,    /* the live load cannot produce a mechanism */
     BL_INFEASIBLE,   /* no equilibrium for any alpha */
     BL_ITERATION_LIMIT,
@@ -55,6 +56,8 @@ typedef struct bl_residuals {
 
 typedef struct bl_timings {
     double detection, assembly, solve, verification, total;
+    double stands;  /* the dead-load check's LPs (part of total; beside the
+                       solve, its own duration) */
 } bl_timings;
 
 /* One start of the sequence of LPs: where its alphas begin in the
@@ -86,6 +89,12 @@ typedef struct bl_solution {
     int *hinge;              /* per interface: 0 or 1 for a rocking joint's
                                 closed end, -1 otherwise (2D) */
     double motion_eps;       /* relative velocities up to this count as zero */
+    int stands;              /* alpha = 0 has an equilibrium within the yield
+                                conditions: 1, 0 (the check's LP is
+                                infeasible), -1 (not decided: not checked, or
+                                the check stopped at a limit) */
+    double alpha_min;        /* stands = 0: the least alpha with an
+                                equilibrium (NAN otherwise) */
     bl_residuals res;
     double tolerance;        /* what "verified" was judged against */
     int verified;
@@ -141,6 +150,11 @@ int bl_solution_keep(bl_solution *s, const double *x, int nx, const double *y, i
 
 /* The status of a solve whose LP ended with st (alpha's sign aside). */
 bl_status bl_status_of_lp(bl_lp_status st);
+
+/* The status of an answer s->alpha: BL_UNSTABLE when the structure cannot
+ * stand under its dead load alone (alpha < 0 or s->stands = 0), else
+ * BL_OPTIMAL. */
+bl_status bl_status_of_answer(const bl_solution *s);
 
 /* Relative velocity of block b with respect to block a at point p,
  * from the mechanism u (either block may be a support). */

@@ -22,8 +22,16 @@ T.ok(r.verified, "W4: verified (Eq. 12 residuals)")
 T.near(r.alpha_assoc, 0.33195, 0.5e-5 / 0.33195, "W4: associative 0.33195 in the same result")
 T.ok(not r.assoc_is_solution and r.alpha_rigid > r.alpha_assoc,
      "W4: friction limits the associative answer (unlimited friction gives more)")
+-- A model of the simplex's size gets 10 restarts by default; the answer is
+-- the lowest alpha any of its 11 starts certified.
+local lowest = math.huge
+for _, st in ipairs(r.starts) do if st.certified then lowest = math.min(lowest, st.alpha) end end
+T.ok(#r.starts == 11 and #r.history == 11 and lowest == r.alpha,
+     "W4, default: 11 starts (a small model), the answer the lowest certified alpha of them",
+     ("%d starts, lowest %.6f, alpha %.6f"):format(#r.starts, lowest, r.alpha))
+r = solve { flow = "nonassociative", starts = 0 }
 T.ok(#r.history == 1 and r.history[1][1] == r.alpha_assoc,
-     "W4: one start, its history beginning at the associative alpha")
+     "W4, starts = 0: one start, its history beginning at the associative alpha")
 T.ok(#r.starts == 1 and r.starts[1].certified and r.starts[1].alpha == r.alpha
      and r.starts[1].lps == r.lps - 2 and r.starts[1].lps > #r.history[1] - 1,
      "W4: the start's record: certified, its alpha the answer, all LPs but the associative "
@@ -31,10 +39,11 @@ T.ok(#r.starts == 1 and r.starts[1].certified and r.starts[1].alpha == r.alpha
      ("%d LPs of %d, %d fixed"):format(r.starts[1].lps, r.lps, #r.history[1] - 1))
 
 -- The cap: W4 needs about 20 fixed LPs; with 3 a start ends uncertified and
--- says so.  By default further starts follow (each with its random stress
--- state's LP and 3 fixed LPs), and then start 1 goes on where it stopped
--- for 3 more; the starts' LPs and iterations add up to the whole but the
--- associative and unlimited-friction LPs.
+-- says so.  By default the 10 restarts of a small model follow (each with
+-- its random stress state's LP and 3 fixed LPs), and when none certifies
+-- start 1 goes on where it stopped for 3 more; the starts' LPs and
+-- iterations add up to the whole but the associative and unlimited-friction
+-- LPs.
 local assoc_its = solve { flow = "associative" }.iterations
 r = solve { flow = "nonassociative", lps = 3, starts = 0 }
 T.ok(r.status == "not certified" and r.alpha ~= r.alpha and #r.history == 1 and #r.history[1] == 4
@@ -43,33 +52,35 @@ T.ok(r.status == "not certified" and r.alpha ~= r.alpha and #r.history == 1 and 
      ("%s, %d LPs"):format(r.status, #r.history[1] - 1))
 local one = r
 r = solve { flow = "nonassociative", lps = 3 }
-local lps, its, ok = 0, 0, #r.starts == 5
+local lps, its, ok = 0, 0, #r.starts == 12
 for k, st in ipairs(r.starts) do
   lps, its = lps + st.lps, its + st.iterations
-  ok = ok and not st.certified and st.lps == ((k == 1 or k == 5) and 3 or 4) and #r.history[k] == 4
-     and st.continues == (k == 5 and 1 or nil)
+  ok = ok and not st.certified and st.lps == ((k == 1 or k == 12) and 3 or 4) and #r.history[k] == 4
+     and st.continues == (k == 12 and 1 or nil)
 end
 T.ok(ok and r.status == "not certified" and lps == r.lps - 2 and its > 0
      and r.iterations - its > assoc_its,
-     "W4, lps = 3, default: 3 more starts while none certifies, then start 1 goes on for 3 "
+     "W4, lps = 3, default: 10 more starts, none certified, then start 1 goes on for 3 "
      .. "more, the starts' LPs adding up", ("%d starts, %d of %d LPs"):format(#r.starts, lps, r.lps))
 -- print(r) of an uncertified result says where each start stopped: start 1
--- at the end of its continuation (history[5]), the others at their own
--- last LP, in the order of the starts.
-local shown = tostring(r):match("which bounds nothing:\n%s*alpha ([^\n]*)")
+-- at the end of its continuation (history[12]), the others at their own
+-- last LP, in the order of the starts, six to a line.
+local shown = tostring(r):match("which bounds nothing:\n%s*alpha ([^\n]*\n?[^\n]*)")
+shown = shown and shown:gsub(",?\n%s*", ", ")
 local want = {}
-for k = 1, 4 do
-  local h = r.history[k == 1 and 5 or k]
+for k = 1, 11 do
+  local h = r.history[k == 1 and 12 or k]
   want[k] = ("%.6g"):format(h[#h])
 end
 T.ok(shown == table.concat(want, ", "),
      "W4, lps = 3: print(r) gives where each start stopped, start 1 after going on",
      ("%s | %s"):format(tostring(shown), table.concat(want, ", ")))
--- ... and what to try then.  With lps = 8 no start of W4 certifies by
--- default; the first setting print(r) names certifies the published value.
-local eight = solve { flow = "nonassociative", lps = 8 }
+-- ... and what to try then.  With lps = 8 no start of W4 certifies in 4
+-- starts; the first setting print(r) names certifies the published value.
+local eight = solve { flow = "nonassociative", lps = 8, starts = 3 }
 local hint = tostring(eight):match("solve again with (settle = [^,]*),")
-local again = hint and solve { flow = "nonassociative", lps = 8, settle = tonumber(hint:match("= (.*)")) }
+local again = hint and solve { flow = "nonassociative", lps = 8, starts = 3,
+                               settle = tonumber(hint:match("= (.*)")) }
 T.ok(eight.status == "not certified" and again and again.certified and again.verified
      and math.abs(again.alpha - 0.26374) <= 0.00005,
      "W4, lps = 8: not certified, and the setting print(r) suggests certifies 0.26374 +- 0.00005",
@@ -78,10 +89,34 @@ T.ok(eight.status == "not certified" and again and again.certified and again.ver
 -- alpha, and its first LP has the capacities of a single start's fourth
 -- (the same LP, hence the same optimal alpha, to 1e-9 relative).
 local six = solve { flow = "nonassociative", lps = 6, starts = 0 }
-T.ok(r.history[5][1] == one.history[1][4]
-     and math.abs(r.history[5][2] - six.history[1][5]) <= 1e-9 * six.history[1][5],
+T.ok(r.history[12][1] == one.history[1][4]
+     and math.abs(r.history[12][2] - six.history[1][5]) <= 1e-9 * six.history[1][5],
      "W4: start 1 going on after the restarts solves the LP a single start of 6 solves fourth",
-     ("%.9g %.9g"):format(r.history[5][2], six.history[1][5]))
+     ("%.9g %.9g"):format(r.history[12][2], six.history[1][5]))
+-- Above the simplex's sizes restarts follow only while none has certified:
+-- W4 doubled each way (220 blocks, 660 rows), start 0 from the associative
+-- forces, 3 LPs a start: 3 more starts, none certified, then start 1 goes on.
+local twice = {}
+for _ = 1, 2 do
+  for _, c in ipairs(walls.W4) do
+    local row = {}
+    for _ = 1, 2 do for _, x in ipairs(c) do row[#row + 1] = x end end
+    twice[#twice + 1] = row
+  end
+end
+model { mu = 0.65 }
+wall { courses = twice, unit = { 0.4, 0.175 } }
+r = solve { flow = "nonassociative", lps = 3, path = false }
+ok = #r.starts == 5 and r.size.rows > 600
+for k, st in ipairs(r.starts) do
+  ok = ok and not st.certified and st.continues == (k == 5 and 1 or nil)
+end
+T.ok(ok and r.status == "not certified",
+     "W4 doubled (660 rows), lps = 3: 3 more starts while none certifies, then start 1 goes on",
+     ("%d starts, %d rows, %s"):format(#r.starts, r.size.rows, r.status))
+r = solve { flow = "nonassociative", path = false }
+T.ok(#r.starts == 1 and r.certified, "W4 doubled: a start that certifies ends the search",
+     ("%d starts, %s"):format(#r.starts, r.status))
 
 -- The default: the non-associative answer wherever a joint has finite
 -- friction, the associative one beside it; rigid joints need no sequence.
@@ -108,6 +143,7 @@ T.ok(r.alpha <= r.alpha_assoc * (1 + 1e-9), "W5: not above the associative alpha
 -- (Eq. 12 with the mechanism held): on W5 one start comes within 0.5 % of
 -- Ferris & Tin-Loi's MPEC answer 0.20863 (at the settled alpha it was
 -- 0.21965, the seed's answer).
+r = solve { flow = "nonassociative", starts = 0 }
 T.ok(r.alpha <= 0.20863 * 1.005, "W5: one start within 0.5 % of Ferris & Tin-Loi's 0.20863",
      ("got %.6f"):format(r.alpha))
 local h = r.history[1]
@@ -157,7 +193,7 @@ r = stack(20, 3)
 T.ok(r.alpha <= 0.1905 and r.certified and r.verified, "stack bond, 20 starts: alpha <= 0.1905, certified",
      ("got %.6f"):format(r.alpha))
 T.eq(#r.history, 21, "stack bond: the history of every start is kept")
-local lowest = math.huge
+lowest = math.huge
 for _, st in ipairs(r.starts) do if st.certified then lowest = math.min(lowest, st.alpha) end end
 T.eq(lowest, r.alpha, "stack bond: the answer is the lowest certified alpha of the 21 starts")
 T.eq(stack(20, 3).alpha, r.alpha, "stack bond: the same seed gives the same answer")

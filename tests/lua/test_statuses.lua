@@ -20,6 +20,48 @@ for _, lp in ipairs { "simplex", "ipm" } do
   T.near(r.alpha, -0.5, 1e-9, lp .. ": leaning block: alpha = -(1.5 - 1)/1")
   T.ok(r.message:find("dead load", 1, true), lp .. ": leaning block: the sentence says why")
 
+  -- A block on a slope steeper than its friction angle (tilt 30 degrees,
+  -- mu = 0.4 < tan 30) has an equilibrium only while the live load along
+  -- the slope holds it: sin 30 - mu cos 30 <= alpha <= sin 30 + mu cos 30.
+  -- The largest alpha is positive, but alpha = 0 has none: unstable.
+  -- (the interior point stops at a relative gap of 1e-8: 1e-7 on alpha)
+  local s30, c30, tol = 0.5, math.sqrt(3) / 2, lp == "ipm" and 1e-7 or 1e-9
+  for _, mu in ipairs { 0.4, 0.7 } do
+    model { mu = mu }
+    block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 0.5 }, { 0, 0.5 } } }
+    base(-1, 2)
+    load { tilt = 30, direction = { -1, 0 } }
+    r = solve { lp = lp, flow = "associative" }
+    local lo, what = s30 - mu * c30, ("%s: block on a 30 degree slope, mu = %g: "):format(lp, mu)
+    T.near(r.alpha, s30 + mu * c30, tol, what .. "alpha = sin 30 + mu cos 30")
+    if lo > 0 then
+      T.eq(r.status, "unstable", what .. "status unstable")
+      T.eq(r.stands, false, what .. "r.stands is false")
+      T.near(r.alpha_min, lo, tol, what .. "alpha_min = sin 30 - mu cos 30")
+      T.ok(tostring(r):find("holds it up", 1, true), what .. "the printed result says why")
+    else
+      T.eq(r.status, "optimal", what .. "(mu > tan 30) status optimal")
+      T.eq(r.stands, true, what .. "r.stands is true")
+      T.eq(r.alpha_min, nil, what .. "no alpha_min")
+    end
+  end
+
+  -- A pier 1 wide and 2 high (weight 2) pushed over by a dead point load P
+  -- at its top, the live load pulling it back at mid-height: rocking about
+  -- either toe bounds alpha to [(2P - 1)/2, (2P + 1)/2].  P = 1: unstable.
+  for _, P in ipairs { 0.25, 1 } do
+    model { mu = 5 }
+    block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 2 }, { 0, 2 } } }
+    base(-1, 2)
+    load { direction = { -1, 0 } }
+    load { dead = { block = 1, at = { 0.5, 2 }, force = { P, 0 } } }
+    r = solve { lp = lp, flow = "associative" }
+    local what = ("%s: pier under a dead point load %g: "):format(lp, P)
+    T.near(r.alpha, (2 * P + 1) / 2, tol, what .. "alpha = (2P + 1)/2")
+    T.eq(r.status, P > 0.5 and "unstable" or "optimal", what .. "unstable exactly when 2P > 1")
+    if P > 0.5 then T.near(r.alpha_min, (2 * P - 1) / 2, tol, what .. "alpha_min = (2P - 1)/2") end
+  end
+
   -- A live load pressing the block down can never make it collapse.
   model { mu = 0.65 }
   block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
@@ -47,6 +89,31 @@ for _, lp in ipairs { "simplex", "ipm" } do
   r = solve { lp = lp, iterations = 3 }
   T.eq(r.status, "iteration limit", lp .. ": 3 iterations on W4: status iteration limit")
   T.ok(not r.verified and r.residuals == nil, lp .. ": iteration limit: no answer claimed")
+end
+
+-- The methods for non-associative friction start from the associative LP
+-- and keep its finding: the block on the steep slope is unstable for each.
+model { mu = 0.4 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 0.5 }, { 0, 0.5 } } }
+block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+load { tilt = 30, direction = { -1, 0 } }
+for _, method in ipairs { "seqlp", "mpec" } do
+  r = solve { method = method, progress = false }
+  T.eq(r.status, "unstable", method .. ": block on a slope steeper than its friction: unstable")
+  T.near(r.alpha_min, 0.5 - 0.4 * math.sqrt(3) / 2, 1e-9, method .. ": alpha_min = sin 30 - mu cos 30")
+end
+
+-- The same block in 3D, on the inscribed pyramid (an edge along the slope
+-- keeps it exact there) and on the adaptive cone, whose dead-load check
+-- runs on the circumscribed pyramid.
+for _, kind in ipairs { "inscribed", "adaptive" } do
+  model { dim = 3, mu = 0.4 }
+  box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+  box { size = { 1, 1, 0.5 } }
+  load { tilt = 30, direction = { -1, 0, 0 } }
+  r = solve { flow = "associative", cone = { kind = kind } }
+  T.eq(r.status, "unstable", "3D, " .. kind .. " cone: block on a slope steeper than its friction: unstable")
+  T.near(r.alpha_min, 0.5 - 0.4 * math.sqrt(3) / 2, 1e-9, "3D, " .. kind .. " cone: alpha_min = sin 30 - mu cos 30")
 end
 
 -- A time limit far below what the simplex needs on a wall of 420 blocks
