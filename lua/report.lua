@@ -19,7 +19,7 @@ function Result.__tostring(r)
   local out = {}
   local function say(fmt, ...) out[#out + 1] = fmt:format(...) end
   local size = r.size
-  if r.status == "optimal" or r.status == "unstable" then
+  if (r.status == "optimal" or r.status == "unstable") and math.abs(r.alpha) < math.huge then
     say("alpha = %.6g  (%s, %s%s)", r.alpha, r.status, r.certified and "certified, " or "",
         r.verified and "verified" or "NOT verified")
   else
@@ -28,9 +28,13 @@ function Result.__tostring(r)
   say("  %s", r.message)
   if r.status == "unstable" and r.alpha < 0 then
     say("  (it needs %.6g times the live load, reversed, to stand)", -r.alpha)
-  elseif r.alpha_min then
+  elseif r.alpha_min and math.abs(r.alpha) < math.huge then
     say("  (alpha = 0 has no equilibrium: only a live load from alpha = %.6g to %.6g holds it up)",
         r.alpha_min, r.alpha)
+  elseif r.alpha_min then
+    -- unbounded above, or no non-associative answer: the bottom alone
+    say("  (alpha = 0 has no equilibrium: only a live load of at least alpha = %.6g holds it up)",
+        r.alpha_min)
   elseif r.status == "optimal" and r.stands == nil then
     say("  (whether the dead load alone has an equilibrium was not decided: its LP stopped short)")
   end

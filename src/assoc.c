@@ -112,6 +112,12 @@ static void dead_finish(dead_check *c)
     c->lp = NULL;
 }
 
+/* Where the interior point leaves the check undecided, models of up to
+ * this many LP rows have it solved again by the simplex (at 1,040 blocks,
+ * 3,120 rows, the simplex took seconds for an LP of the associative
+ * solve). */
+#define BL_DEAD_SIMPLEX_ROWS 3000
+
 /* Where alpha = 0 has no equilibrium: the least alpha that has one (the
  * bottom of the interval whose top the solve found), or NAN. */
 static double alpha_min(const bl_system *sys, const bl_solve_options *o)
@@ -245,8 +251,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     if (st == BL_LP_OPTIMAL) {
         const double *x = bl_lp_primal(lp), *y = bl_lp_dual(lp);
         s->alpha = x[sys->nforce];
-        if (s->alpha < 0.0) s->stands = 0; /* the interval lies below 0 */
-        s->status = bl_status_of_answer(s);
+        bl_solution_answer_status(s);
         s->has_mechanism = 1;
         if (sys->dim == 3) {
             bl_system_forces3(sys, x, s->force);
@@ -266,7 +271,10 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         }
     }
     double t4 = bl_clock();
-    if (s->status == BL_OPTIMAL && o->dead_load != BL_DEAD_NONE) {
+    /* The check, after an answer alpha >= 0, and where no live load makes
+     * the structure collapse (unbounded): whether the dead load alone has
+     * an equilibrium. */
+    if ((s->status == BL_OPTIMAL || s->status == BL_UNBOUNDED) && o->dead_load != BL_DEAD_NONE) {
         /* 3D with the adaptive cone: its edges follow the slip at the top
          * of the interval; the circumscribed pyramid holds more friction
          * than the cone, so that no equilibrium on it is none on the cone */
@@ -275,6 +283,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         if (m->dim == 3 && o->cone.adaptive && !dead.started)
             check = bl_system_build3(m, &around, BL_FRICTION_CONE, err);
         if (!check) {
+            bl_lp_free(lp);
             bl_system_free(sys);
             bl_solution_free(s);
             return -1;
@@ -287,11 +296,33 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         if (!dead.started && marked) bl_lp_rewind(lp);
         if (!dead.started) dead_start(&dead, check, o, reuse ? lp : NULL, 0);
         dead_finish(&dead);
+        /* The interior point can stall short of a small infeasibility (a
+         * block on a slope 3e-4 steeper than its friction angle: 114
+         * iterations, undecided) that the simplex decides: on models of up
+         * to BL_DEAD_SIMPLEX_ROWS rows it solves the check again. */
+        bl_solve_options simplex = *o;
+        simplex.lp = BL_LP_SIMPLEX;
+        const bl_solve_options *how = o;
+        if (dead.status != BL_LP_OPTIMAL && dead.status != BL_LP_INFEASIBLE &&
+            dead.status != BL_LP_INTERRUPTED && dead.status != BL_LP_TIME_LIMIT &&
+            strcmp(s->lp, "ipm") == 0 && check->nrows <= BL_DEAD_SIMPLEX_ROWS) {
+            double before = dead.seconds;
+            how = &simplex;
+            dead = (dead_check){0};
+            dead_start(&dead, check, how, NULL, 0);
+            dead_finish(&dead);
+            dead.seconds += before;
+        }
         s->stands = dead.status == BL_LP_OPTIMAL ? 1 : dead.status == BL_LP_INFEASIBLE ? 0 : -1;
         double ta = bl_clock();
-        if (s->stands == 0) s->alpha_min = alpha_min(check, o);
+        if (s->stands == 0) s->alpha_min = alpha_min(check, how);
         if (check != sys) bl_system_free(check);
-        s->status = bl_status_of_answer(s);
+        if (s->status == BL_OPTIMAL) {
+            bl_solution_answer_status(s);
+        } else if (s->stands == 0) { /* unbounded: held up from alpha_min on */
+            s->alpha = INFINITY;
+            s->status = BL_UNSTABLE;
+        }
         s->time.stands = dead.seconds + (bl_clock() - ta);
     }
     dead_finish(&dead);

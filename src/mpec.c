@@ -744,7 +744,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     s->flow = nonassoc ? "nonassociative" : "associative";
     s->status = status_of(r);
     s->alpha = v[0];
-    if (s->status == BL_OPTIMAL) s->status = bl_status_of_answer(s);
+    if (s->status == BL_OPTIMAL) bl_solution_answer_status(s);
     s->alpha_start = alpha_start;
     s->iterations = p.iterations;
     s->nlp_status = ipopt_word(r);
@@ -768,7 +768,8 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     if (v0 && converged && (!s->verified || s->alpha > alpha_start)) {
         answer_from(s, v0, &l, c, f, nonassoc, o, xa);
         s->kept_start = 1;
-        s->status = !s->verified ? BL_NOT_COMPLEMENTARY : bl_status_of_answer(s);
+        if (s->verified) bl_solution_answer_status(s);
+        else s->status = BL_NOT_COMPLEMENTARY;
     }
     const double *end = s->kept_start ? v0 : v;
     s->pair_sum = 0.0;

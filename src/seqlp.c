@@ -979,7 +979,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         double mu = s->model->interfaces[k].mu;
         sliding |= isfinite(mu) && mu > 0.0;
     }
-    if ((!sliding && o->when_sliding) || (s->status != BL_OPTIMAL && s->status != BL_UNSTABLE)) {
+    if ((!sliding && o->when_sliding) || (s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) ||
+        !s->has_mechanism) {
         path_free(&pj);
         *out = s;
         return 0;
@@ -1095,12 +1096,13 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
              * gives the associative alpha: start 0 then certifies the
              * associative answer, and restarts found lower ones in every
              * case measured (doc/seqlp.md: W1, the stack-bond wall); and
-             * on models of the simplex's size (BL_SEQLP_SEARCH_ROWS), where
-             * start 0 certified up to 21 % above the lowest of 10 restarts
-             * (W4 and W5 loaded the other way) and 10 restarts take a
-             * fraction of a second; else restarts only while none has
-             * certified (BL_SEQLP_RETRIES). */
-            int search = s->assoc_is_solution || r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS;
+             * on small 2D models (BL_SEQLP_SEARCH_ROWS), where start 0
+             * certified up to 21 % above the lowest of 10 restarts (W4 and
+             * W5 loaded the other way) and 10 restarts take about half a
+             * second; else restarts only while none has certified
+             * (BL_SEQLP_RETRIES). */
+            int search = s->assoc_is_solution ||
+                         (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS);
             retry = sliding && o->starts < 0 && !search && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
             starts = !sliding ? 0 : o->starts >= 0 ? o->starts : search ? BL_SEQLP_SEARCH
                                                      : retry ? BL_SEQLP_RETRIES : 0;
@@ -1139,7 +1141,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     if (r.found) {
         s->alpha = r.best_alpha;
         s->alpha_settled = r.best_settled;
-        s->status = bl_status_of_answer(s);
+        bl_solution_answer_status(s);
         s->certified = 1;
         if (mc->dim == 3) {
             bl_system_forces3(r.cone, r.best_x, s->force);
@@ -1158,7 +1160,11 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             goto fail;
         }
     } else {
-        s->status = stop != BL_LP_OPTIMAL ? bl_status_of_lp(stop) : BL_UNCERTIFIED;
+        /* no equilibrium at alpha = 0 (the associative LP's check): unstable
+         * whatever the sequence found */
+        s->status = stop != BL_LP_OPTIMAL ? bl_status_of_lp(stop)
+                    : s->stands == 0      ? BL_UNSTABLE
+                                          : BL_UNCERTIFIED;
         s->has_mechanism = 0;
         s->alpha = NAN; /* an LP of fixed capacities bounds nothing */
         free(s->x);
@@ -1171,7 +1177,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     path_free(&pj);
     run_free(&r);
     s->time.total = bl_clock() - t0;
-    s->time.solve = s->time.total - s->time.detection - s->time.assembly - s->time.verification;
+    s->time.solve = s->time.total - s->time.detection - s->time.assembly - s->time.verification -
+                    s->time.stands;
     *out = s;
     return 0;
 fail:

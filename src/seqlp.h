@@ -18,7 +18,7 @@ typedef struct bl_seqlp_options {
     double slip;           /* motions below slip x the largest count as zero (1e-4) */
     int max_lps;           /* cap on the LPs of one start (100) */
     int starts;            /* further starts from random stress states (Eq. 22);
-                              < 0: BL_SEQLP_SEARCH on models of at most
+                              < 0: BL_SEQLP_SEARCH on 2D models of at most
                               BL_SEQLP_SEARCH_ROWS rows and where unlimited
                               friction gives the associative alpha, else up
                               to BL_SEQLP_RETRIES until one certifies, on
@@ -48,15 +48,16 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * none has certified it). */
 #define BL_SEQLP_RETRIES 3
 
-/* By default small models get BL_SEQLP_SEARCH restarts, whatever start 0
- * did: one start's answer is a solution, not always the lowest, and on
+/* By default small 2D models get BL_SEQLP_SEARCH restarts, whatever start
+ * 0 did: one start's answer is a solution, not always the lowest, and on
  * the walls W4 and W5 loaded towards -x start 0 certified 0.318207 and
  * 0.227542 where 10 restarts reached 0.263736 and 0.209302, the +x
  * answers of the mirrored walls (doc/seqlp.md 2).  Up to
- * BL_SEQLP_SEARCH_ROWS rows, the simplex's sizes (lp.h), 10 restarts took
- * 0.2-0.7 s on those walls. */
+ * BL_SEQLP_SEARCH_ROWS rows (W4 165, W5 183) 10 restarts took 0.4-0.7 s;
+ * a 95-block wall of 315 rows took 3.2 s against 0.2 s, and 3D models
+ * (a dome of 192 rows: 222 s against 30 s) keep the rules below. */
 #define BL_SEQLP_SEARCH 10
-#define BL_SEQLP_SEARCH_ROWS BL_LP_AUTO_ROWS
+#define BL_SEQLP_SEARCH_ROWS 300
 #define BL_SEQLP_RETRY_ROWS 10000
 
 /* A start whose certificates keep failing while alpha has settled is

@@ -87,9 +87,10 @@ bl_status bl_status_of_lp(bl_lp_status st)
     }
 }
 
-bl_status bl_status_of_answer(const bl_solution *s)
+void bl_solution_answer_status(bl_solution *s)
 {
-    return s->alpha < 0.0 || s->stands == 0 ? BL_UNSTABLE : BL_OPTIMAL;
+    if (s->alpha < 0.0) s->stands = 0;
+    s->status = s->stands == 0 ? BL_UNSTABLE : BL_OPTIMAL;
 }
 
 void bl_solution_free(bl_solution *s)

@@ -151,10 +151,10 @@ int bl_solution_keep(bl_solution *s, const double *x, int nx, const double *y, i
 /* The status of a solve whose LP ended with st (alpha's sign aside). */
 bl_status bl_status_of_lp(bl_lp_status st);
 
-/* The status of an answer s->alpha: BL_UNSTABLE when the structure cannot
- * stand under its dead load alone (alpha < 0 or s->stands = 0), else
- * BL_OPTIMAL. */
-bl_status bl_status_of_answer(const bl_solution *s);
+/* Sets the status of an answer s->alpha: where alpha < 0 the interval of
+ * alphas with an equilibrium lies below 0 (s->stands = 0); BL_UNSTABLE when
+ * the structure cannot stand under its dead load alone, else BL_OPTIMAL. */
+void bl_solution_answer_status(bl_solution *s);
 
 /* Relative velocity of block b with respect to block a at point p,
  * from the mechanism u (either block may be a support). */

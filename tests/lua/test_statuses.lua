@@ -103,6 +103,45 @@ for _, method in ipairs { "seqlp", "mpec" } do
   T.near(r.alpha_min, 0.5 - 0.4 * math.sqrt(3) / 2, 1e-9, method .. ": alpha_min = sin 30 - mu cos 30")
 end
 
+-- Pressed onto the slope by the live load (along -y of the tilted model),
+-- the block never slides up: no alpha makes it collapse (unbounded), but it
+-- slides down unless mu (cos 30 + alpha) >= sin 30: unstable, held up from
+-- alpha_min = (sin 30 - mu cos 30) / mu on, with no collapse multiplier.
+model { mu = 0.4 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 0.5 }, { 0, 0.5 } } }
+block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+load { tilt = 30, direction = { 0, -1 } }
+for _, lp in ipairs { "simplex", "ipm" } do
+  r = solve { lp = lp }
+  T.ok(r.status == "unstable" and r.alpha == math.huge and r.stands == false,
+       lp .. ": block pressed onto a steep slope: unstable, alpha = inf (no live load makes it collapse)",
+       ("%s %s"):format(r.status, tostring(r.alpha)))
+  T.near(r.alpha_min, (0.5 - 0.4 * math.sqrt(3) / 2) / 0.4, 1e-7,
+         lp .. ": block pressed onto a steep slope: alpha_min = (sin 30 - mu cos 30) / mu")
+end
+T.ok(tostring(r):find("at least alpha = 0.383975", 1, true), "pressed block: print(r) gives the bottom")
+
+-- A slope 3e-4 steeper than the friction angle (mu = 0.577 < tan 30): the
+-- interior point stalls short of so small an infeasibility; the simplex
+-- decides the check for it.
+model { mu = 0.577 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 0.5 }, { 0, 0.5 } } }
+block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+load { tilt = 30, direction = { -1, 0 } }
+r = solve { lp = "ipm", flow = "associative" }
+T.eq(r.status, "unstable", "ipm, slope 3e-4 beyond the friction angle: unstable")
+T.near(r.alpha_min, 0.5 - 0.577 * math.sqrt(3) / 2, 1e-6, "ipm, near the friction angle: alpha_min = sin 30 - mu cos 30")
+
+-- A non-associative alpha below 0 (W4 tilted by 16 degrees: its restarts
+-- find one): unstable, and stands is false with it.
+model { mu = 0.65 }
+wall { courses = require("walls").W4, unit = { 0.4, 0.175 } }
+load { tilt = 16 }
+r = solve {}
+T.ok(r.alpha < 0 and r.status == "unstable" and r.stands == false,
+     "W4 tilted 16 degrees, non-associative: alpha < 0, unstable, stands false",
+     ("%s %s %s"):format(tostring(r.alpha), r.status, tostring(r.stands)))
+
 -- The same block in 3D, on the inscribed pyramid (an edge along the slope
 -- keeps it exact there) and on the adaptive cone, whose dead-load check
 -- runs on the circumscribed pyramid.
