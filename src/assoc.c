@@ -170,7 +170,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     bl_lp *lp = NULL;
     bl_lp_status st = BL_LP_FAILED;
     dead_check dead = {0};
-    int reuse = 0, marked = 0; /* the check will re-solve lp; lp marked cold */
+    int reuse = 0; /* the check will re-solve lp */
     double t2 = bl_clock(), t3 = t2, prev = NAN, solve_time = 0.0;
     int lost = 0; /* iterations of LPs solved again */
     for (int round = 1;; round++) {
@@ -188,7 +188,6 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
                                                        : bl_solve_lp(sys, sys->lo, sys->hi, NULL, o, err);
         if (!lp) break;
         t2 = bl_clock();
-        marked = reuse && bl_lp_mark(lp) == 0;
         st = bl_lp_solve(lp);
         if ((st == BL_LP_FAILED || st == BL_LP_ITERATION_LIMIT) &&
             strcmp(bl_lp_engine(lp), "ipm") == 0) {
@@ -205,8 +204,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
             bl_lp_free(lp);
             lp = bl_solve_lp(sys, sys->lo, sys->hi, NULL, o, err);
             if (!lp) break;
-            marked = reuse && bl_lp_mark(lp) == 0;
-            st = bl_lp_solve(lp);
+                st = bl_lp_solve(lp);
         }
         t3 = bl_clock();
         solve_time += t3 - t2;
@@ -289,11 +287,10 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
             return -1;
         }
         /* After the solve, on its LP (its answer is kept in s): the
-         * interior point, rewound to before it, starts cold but keeps its
-         * analysis and its arrays (2,525 blocks: 24 % of the solve's time
-         * against 31 % for an LP of its own); the simplex goes on from its
-         * basis. */
-        if (!dead.started && marked) bl_lp_rewind(lp);
+         * interior point starts cold but keeps its analysis and its arrays
+         * (2,525 blocks: 24 % of the solve's time against 31 % for an LP of
+         * its own); the simplex goes on from its basis. */
+        if (!dead.started && reuse) bl_lp_cold(lp);
         if (!dead.started) dead_start(&dead, check, o, reuse ? lp : NULL, 0);
         dead_finish(&dead);
         /* The interior point can stall short of a small infeasibility (a

@@ -88,4 +88,8 @@ int bl_lp_warm(bl_lp *lp, const double *x, const double *zl, const double *zu, c
 {
     return lp->engine->warm ? lp->engine->warm(lp->impl, x, zl, zu, y, mu) : -1;
 }
+void bl_lp_cold(bl_lp *lp)
+{
+    if (lp->engine->cold) lp->engine->cold(lp->impl);
+}
 const char *bl_lp_engine(const bl_lp *lp) { return lp->engine->name; }

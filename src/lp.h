@@ -126,6 +126,12 @@ void bl_lp_rewind(bl_lp *lp);
 int bl_lp_warm(bl_lp *lp, const double *x, const double *zl, const double *zu, const double *y,
                double mu);
 
+/* The next solve starts as the first did: the interior point from its
+ * starting point (for an LP whose answer lies far from the last one's),
+ * keeping the analysis of its normal matrix; the simplex keeps its basis,
+ * whose warm start costs it little. */
+void bl_lp_cold(bl_lp *lp);
+
 /* Non-zeros of the interior point's Cholesky factor (0 for the simplex). */
 double bl_lp_factor_nnz(const bl_lp *lp);
 /* Writes p to file in MPS format, as the minimization of -obj (free MPS

@@ -185,5 +185,5 @@ extern "C" int bl_lp_write_mps(const bl_lp_problem *p, const char *file, bl_erro
 
 extern "C" const bl_lp_backend bl_lp_clp_engine = {
     "simplex", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz, ray,
-    NULL, NULL, NULL,
+    NULL, NULL, NULL, NULL,
 };

@@ -1076,7 +1076,15 @@ static int warm(void *e, const double *x, const double *zl, const double *zu, co
     return 0;
 }
 
+/* bl_lp_cold: the kept point is not used; the next solve takes the
+ * starting point. */
+static void cold(void *e)
+{
+    ipm *p = e;
+    p->k.warm = 0;
+}
+
 const bl_lp_backend bl_lp_ipm_engine = {
     "ipm", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz, ray,
-    mark, rewind_to_mark, warm,
+    mark, rewind_to_mark, warm, cold,
 };
