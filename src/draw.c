@@ -50,7 +50,7 @@ typedef struct pic {
     double top, dh;       /* drawing area, canvas units */
     double font;
     double margin;        /* around the drawing and left of the caption */
-    char caption[96];
+    char caption[160];
     /* 3D: the view (eye: towards the viewer; right and up: the canvas axes) */
     int dim;
     bl_vec3 eye, right, up;
@@ -362,8 +362,16 @@ static void layout(pic *P, const bl_solution *s, int width, double azimuth, doub
     if (P->m)
         P->mark = fmin(P->unit, fmax(0.2 * P->unit, sqrt(dw * P->dh / P->m->nblocks) / 30.0));
     const char *name = bl_status_name(s->status);
-    char value[32] = "no alpha"; /* as print(r) says where a sequence found none */
-    if (!isnan(s->alpha)) snprintf(value, sizeof value, "alpha = %.5g", s->alpha);
+    /* as print(r) says: no alpha where a sequence found none or no live
+     * load makes the structure collapse; an interval where only the live
+     * load holds it up (doc/theory.md 8) */
+    char value[64] = "no alpha";
+    if (isfinite(s->alpha) && !isnan(s->alpha_min))
+        snprintf(value, sizeof value, "alpha = %.5g, held up from alpha_min = %.5g", s->alpha, s->alpha_min);
+    else if (isfinite(s->alpha))
+        snprintf(value, sizeof value, "alpha = %.5g", s->alpha);
+    else if (!isnan(s->alpha_min))
+        snprintf(value, sizeof value, "no alpha, held up from alpha_min = %.5g", s->alpha_min);
     snprintf(P->caption, sizeof P->caption, "%s  (%s, %s flow, %s%s)", value, name ? name : "?",
              s->flow, s->method, s->verified ? ", verified" : "");
     P->has_legend = P->m && P->k > 0.0;
