@@ -86,15 +86,13 @@ static void dead_start(dead_check *c, const bl_system *sys, const bl_solve_optio
     if (!loaded) return;
     size_t n = (size_t)sys->ncols;
     double *lo = malloc(n * sizeof *lo), *hi = malloc(n * sizeof *hi);
-    bl_solve_options q = *o;
-    q.mps = NULL;
     bl_error err;
     if (lo && hi) {
         memcpy(lo, sys->lo, n * sizeof *lo);
         memcpy(hi, sys->hi, n * sizeof *hi);
         lo[sys->nforce] = hi[sys->nforce] = 0.0;
         if (reuse) bl_lp_set_bounds(reuse, lo, hi);
-        c->lp = reuse ? reuse : bl_solve_lp(sys, lo, hi, NULL, &q, &err);
+        c->lp = reuse ? reuse : bl_solve_lp(sys, lo, hi, NULL, o, &err);
         c->owned = !reuse;
     }
     free(lo);
@@ -124,10 +122,8 @@ static double alpha_min(const bl_system *sys, const bl_solve_options *o)
 {
     double *obj = calloc((size_t)sys->ncols, sizeof *obj), a = NAN;
     bl_error err;
-    bl_solve_options q = *o;
-    q.mps = NULL;
     if (obj) obj[sys->nforce] = -1.0;
-    bl_lp *lp = obj ? bl_solve_lp(sys, sys->lo, sys->hi, obj, &q, &err) : NULL;
+    bl_lp *lp = obj ? bl_solve_lp(sys, sys->lo, sys->hi, obj, o, &err) : NULL;
     if (lp && bl_lp_solve(lp) == BL_LP_OPTIMAL) a = bl_lp_primal(lp)[sys->nforce];
     bl_lp_free(lp);
     free(obj);
@@ -290,8 +286,10 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
          * interior point starts cold but keeps its analysis and its arrays
          * (2,525 blocks: 24 % of the solve's time against 31 % for an LP of
          * its own); the simplex goes on from its basis. */
-        if (!dead.started && reuse) bl_lp_cold(lp);
-        if (!dead.started) dead_start(&dead, check, o, reuse ? lp : NULL, 0);
+        if (!dead.started) {
+            if (reuse) bl_lp_cold(lp);
+            dead_start(&dead, check, o, reuse ? lp : NULL, 0);
+        }
         dead_finish(&dead);
         /* The interior point can stall short of a small infeasibility (a
          * block on a slope 3e-4 steeper than its friction angle: 114
