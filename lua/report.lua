@@ -40,9 +40,14 @@ function Result.__tostring(r)
   end
   if r.note and (not r.certified or r.interrupted) then say("  %s", r.note) end
   if r.alpha_assoc then
-    say("  associative alpha = %.6g%s; %d LPs in the sequence%s", r.alpha_assoc,
-        r.certified and "" or " (an upper bound on the non-associative one)", r.lps,
-        r.certified and not r.interrupted and ", the last one its certificate" or "")
+    local last = r.certified and not r.interrupted and ", the last one its certificate" or ""
+    if r.alpha_assoc == math.huge then
+      say("  no associative alpha (unbounded: with dilatancy no mechanism moves); %d LPs in", r.lps)
+      say("  the sequence%s; its first fixed LP has no friction", last)
+    else
+      say("  associative alpha = %.6g%s; %d LPs in the sequence%s", r.alpha_assoc,
+          r.certified and "" or " (an upper bound on the non-associative one)", r.lps, last)
+    end
     if r.path and r.path.taken then
       say("  the first start from the path of the non-associative problem: %d Newton steps,", r.path.steps)
       say("  alpha %.6g, products %s, %.3f s", r.path.alpha, g(r.path.products), r.path.time)

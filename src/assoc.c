@@ -110,22 +110,32 @@ static void dead_finish(dead_check *c)
     c->lp = NULL;
 }
 
-/* Where the interior point leaves the check undecided, models of up to
- * this many LP rows have it solved again by the simplex (at 1,040 blocks,
- * 3,120 rows, the simplex took seconds for an LP of the associative
- * solve). */
-#define BL_DEAD_SIMPLEX_ROWS 3000
+/* Where the interior point fails an LP or leaves the check undecided,
+ * models of up to this many LP rows have it solved again by the simplex
+ * (at 1,040 blocks, 3,120 rows, the simplex took seconds for an LP of the
+ * associative solve). */
+#define BL_SIMPLEX_ROWS 3000
 
 /* Where alpha = 0 has no equilibrium: the least alpha that has one (the
- * bottom of the interval whose top the solve found), or NAN. */
-static double alpha_min(const bl_system *sys, const bl_solve_options *o)
+ * bottom of the interval whose top the solve found), or NAN.  On the
+ * answer's LP of sys when given (its bounds as sys's again, its objective
+ * turned round: the simplex goes on from its basis, which took a fifth of
+ * the time of an LP of its own), else on an LP of its own. */
+static double alpha_min(const bl_system *sys, bl_lp *answer, const bl_solve_options *o)
 {
     double *obj = calloc((size_t)sys->ncols, sizeof *obj), a = NAN;
     bl_error err;
-    if (obj) obj[sys->nforce] = -1.0;
-    bl_lp *lp = obj ? bl_solve_lp(sys, sys->lo, sys->hi, obj, o, &err) : NULL;
+    if (!obj) return NAN;
+    obj[sys->nforce] = -1.0;
+    bl_lp *lp = answer;
+    if (lp) {
+        bl_lp_set_bounds(lp, sys->lo, sys->hi);
+        bl_lp_set_objective(lp, obj);
+    } else {
+        lp = bl_solve_lp(sys, sys->lo, sys->hi, obj, o, &err);
+    }
     if (lp && bl_lp_solve(lp) == BL_LP_OPTIMAL) a = bl_lp_primal(lp)[sys->nforce];
-    bl_lp_free(lp);
+    if (lp != answer) bl_lp_free(lp);
     free(obj);
     return a;
 }
@@ -200,7 +210,22 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
             bl_lp_free(lp);
             lp = bl_solve_lp(sys, sys->lo, sys->hi, NULL, o, err);
             if (!lp) break;
-                st = bl_lp_solve(lp);
+            st = bl_lp_solve(lp);
+        }
+        if ((st == BL_LP_FAILED || st == BL_LP_ITERATION_LIMIT) && o->lp == BL_LP_AUTO &&
+            strcmp(bl_lp_engine(lp), "ipm") == 0 && sys->nrows <= BL_SIMPLEX_ROWS) {
+            /* Round-off can stop the interior point short of the answer
+             * (an arch of 241 voussoirs at mu = 100 on the unweighted
+             * path: the primal residual grew from 1e-12 to 1e-3 once the
+             * barrier fell below 1e-9): on a model the simplex solves in
+             * seconds, it does. */
+            bl_solve_options simplex = *o;
+            simplex.lp = BL_LP_SIMPLEX;
+            lost += bl_lp_iterations(lp);
+            bl_lp_free(lp);
+            lp = bl_solve_lp(sys, sys->lo, sys->hi, NULL, &simplex, err);
+            if (!lp) break;
+            st = bl_lp_solve(lp);
         }
         t3 = bl_clock();
         solve_time += t3 - t2;
@@ -294,13 +319,13 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         /* The interior point can stall short of a small infeasibility (a
          * block on a slope 3e-4 steeper than its friction angle: 114
          * iterations, undecided) that the simplex decides: on models of up
-         * to BL_DEAD_SIMPLEX_ROWS rows it solves the check again. */
+         * to BL_SIMPLEX_ROWS rows it solves the check again. */
         bl_solve_options simplex = *o;
         simplex.lp = BL_LP_SIMPLEX;
         const bl_solve_options *how = o;
         if (dead.status != BL_LP_OPTIMAL && dead.status != BL_LP_INFEASIBLE &&
             dead.status != BL_LP_INTERRUPTED && dead.status != BL_LP_TIME_LIMIT &&
-            strcmp(s->lp, "ipm") == 0 && check->nrows <= BL_DEAD_SIMPLEX_ROWS) {
+            strcmp(s->lp, "ipm") == 0 && check->nrows <= BL_SIMPLEX_ROWS) {
             double before = dead.seconds;
             how = &simplex;
             dead = (dead_check){0};
@@ -310,7 +335,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         }
         s->stands = dead.status == BL_LP_OPTIMAL ? 1 : dead.status == BL_LP_INFEASIBLE ? 0 : -1;
         double ta = bl_clock();
-        if (s->stands == 0) s->alpha_min = alpha_min(check, how);
+        if (s->stands == 0) s->alpha_min = alpha_min(check, check == sys && how == o ? lp : NULL, how);
         if (check != sys) bl_system_free(check);
         if (s->status == BL_OPTIMAL) {
             bl_solution_answer_status(s);

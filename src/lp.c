@@ -72,6 +72,11 @@ void bl_lp_set_bounds(bl_lp *lp, const double *lo, const double *hi)
     lp->engine->set_bounds(lp->impl, lo, hi);
 }
 
+void bl_lp_set_objective(bl_lp *lp, const double *obj)
+{
+    lp->engine->set_objective(lp->impl, obj);
+}
+
 bl_lp_status bl_lp_solve(bl_lp *lp) { return lp->engine->solve(lp->impl); }
 const double *bl_lp_primal(const bl_lp *lp) { return lp->engine->primal(lp->impl); }
 const double *bl_lp_dual(const bl_lp *lp) { return lp->engine->dual(lp->impl); }

@@ -92,6 +92,12 @@ void bl_lp_free(bl_lp *lp);
 /* Replaces all column bounds (arrays of ncols). */
 void bl_lp_set_bounds(bl_lp *lp, const double *lo, const double *hi);
 
+/* Replaces the objective (ncols, maximized).  The next solve starts
+ * afresh from the last answer: the simplex by its primal method from its
+ * basis (still feasible where only the objective changed), the interior
+ * point cold, keeping its analysis. */
+void bl_lp_set_objective(bl_lp *lp, const double *obj);
+
 /* Solves (warm from the last basis when there is one), polling
  * bl_interrupt_pending() between iterations. */
 bl_lp_status bl_lp_solve(bl_lp *lp);

@@ -36,6 +36,8 @@ struct clp_lp {
     ClpSimplex model;
     int nrows = 0, ncols = 0;
     bool solved = false;
+    bool objective_changed = false; // the next solve: primal, from the basis
+    bool feasibility = false;       // no objective: the dual simplex from the start
     std::vector<double> x, y, ray;
     int iterations = 0;
 };
@@ -62,6 +64,8 @@ static void *create(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *e
             obj[j] = -p->obj[j]; // CLP minimizes
         }
         std::vector<CoinBigIndex> start(p->colptr, p->colptr + p->ncols + 1);
+        lp->feasibility = true;
+        for (int j = 0; j < p->ncols; j++) lp->feasibility = lp->feasibility && (obj[j] == 0.0 || lo[j] == hi[j]);
         lp->model.loadProblem(p->ncols, p->nrows, start.data(), p->rowind, p->val, lo.data(),
                               hi.data(), obj.data(), p->rhs, p->rhs);
         lp->model.setLogLevel(s->verbose ? 1 : 0);
@@ -94,6 +98,13 @@ static void set_bounds(void *e, const double *lo, const double *hi)
         lp->model.setColumnBounds(j, clp_bound(lo[j]), clp_bound(hi[j]));
 }
 
+static void set_objective(void *e, const double *obj)
+{
+    clp_lp *lp = static_cast<clp_lp *>(e);
+    for (int j = 0; j < lp->ncols; j++) lp->model.setObjectiveCoefficient(j, -obj[j]);
+    lp->objective_changed = true;
+}
+
 static bl_lp_status solve(void *e)
 {
     clp_lp *lp = static_cast<clp_lp *>(e);
@@ -101,9 +112,14 @@ static bl_lp_status solve(void *e)
         // Cold, the primal simplex took 7x fewer iterations than the dual on
         // a 1,040-block wall (doc/performance.md); after a bound change
         // the previous basis stays primal-infeasible but dual-feasible, the
-        // dual simplex's warm start.
-        if (lp->solved) lp->model.dual(0);
+        // dual simplex's warm start.  After an objective change it stays
+        // primal-feasible instead: the primal simplex's.  Without an
+        // objective (the dead-load check) every basis is dual-feasible, and
+        // the dual simplex needs no first phase: 1,230 rows, 0.24 s against
+        // 0.77 s where the check holds, 1.0 s against 5.7 s where it fails.
+        if ((lp->solved || lp->feasibility) && !lp->objective_changed) lp->model.dual(0);
         else lp->model.primal(0);
+        lp->objective_changed = false;
         lp->solved = true;
         lp->iterations = lp->model.numberIterations();
         // "Optimal" for CLP's internally scaled problem can leave primal or
@@ -184,6 +200,6 @@ extern "C" int bl_lp_write_mps(const bl_lp_problem *p, const char *file, bl_erro
 }
 
 extern "C" const bl_lp_backend bl_lp_clp_engine = {
-    "simplex", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz, ray,
+    "simplex", create, destroy, set_bounds, set_objective, solve, primal, dual, iterations, factor_nnz, ray,
     NULL, NULL, NULL, NULL,
 };

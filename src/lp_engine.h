@@ -10,6 +10,7 @@ typedef struct bl_lp_backend {
     void *(*create)(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *err);
     void (*free)(void *e);
     void (*set_bounds)(void *e, const double *lo, const double *hi);
+    void (*set_objective)(void *e, const double *obj);
     bl_lp_status (*solve)(void *e);
     const double *(*primal)(const void *e);
     const double *(*dual)(const void *e);

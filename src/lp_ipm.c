@@ -276,6 +276,17 @@ static void set_bounds(void *e, const double *lo, const double *hi)
     }
 }
 
+static void set_objective(void *e, const double *obj)
+{
+    ipm *p = e;
+    memcpy(p->obj, obj, (size_t)p->nu * sizeof *p->obj);
+    p->k.warm = 0;
+    bl_error err;
+    if (build(p, &err)) {
+        /* out of memory: solve will report failure */
+    }
+}
+
 /* ---- linear algebra helpers ------------------------------------------------ */
 
 static double inf_norm(const double *a, int n)
@@ -1085,6 +1096,6 @@ static void cold(void *e)
 }
 
 const bl_lp_backend bl_lp_ipm_engine = {
-    "ipm", create, destroy, set_bounds, solve, primal, dual, iterations, factor_nnz, ray,
+    "ipm", create, destroy, set_bounds, set_objective, solve, primal, dual, iterations, factor_nnz, ray,
     mark, rewind_to_mark, warm, cold,
 };

@@ -666,15 +666,26 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
         if (bl_assoc_solve(m, &o->seq.base, &s, err)) return -1;
         start_kind = "assoc (the sequence of LPs did not certify)";
     }
+    /* An unbounded associative LP proves nothing without dilatancy (a
+     * block wedged between supports, seqlp.c): the sequence of LPs, which
+     * decides it, is the start instead */
+    int from_seq = o->start == BL_MPEC_START_SEQLP;
+    if (o->start == BL_MPEC_START_ASSOC && o->nonassociative && s->status == BL_UNBOUNDED) {
+        from_seq = 1;
+        bl_solution_free(s);
+        if (bl_seqlp_solve(m, &o->seq, &s, err)) return -1;
+        start_kind = "seqlp (the associative LP is unbounded)";
+    }
+    int cold = o->start == BL_MPEC_START_COLD;
     /* Ctrl-C during the start: its result is the answer (a sequence
      * stopped by it keeps what it certified, and says so) */
     if (s->status == BL_INTERRUPTED || s->interrupted) {
         *out = s;
         return 0;
     }
-    double alpha_start = s->x && o->start != BL_MPEC_START_COLD ? s->alpha : NAN;
+    double alpha_start = s->x && !cold ? s->alpha : NAN;
     double t_start = bl_clock() - t0;
-    if (o->start != BL_MPEC_START_COLD && !s->x) {
+    if (!cold && !s->x) {
         /* no answer to start from: the start's status is the answer */
         *out = s;
         return 0;
@@ -698,9 +709,9 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     v = calloc((size_t)p.n, sizeof *v);
     mult = calloc((size_t)p.m + 2 * (size_t)p.n, sizeof *mult);
     if (!v || !mult) goto oom;
-    if (o->start != BL_MPEC_START_COLD) start_from(&p, &l, c, f, s->x, s->y, nonassoc, v);
+    if (!cold) start_from(&p, &l, c, f, s->x, s->y, nonassoc, v);
     /* a certified start (the sequence's answer to the same problem), kept */
-    if (o->start == BL_MPEC_START_SEQLP && s->certified && nonassoc) {
+    if (from_seq && s->certified && nonassoc) {
         v0 = malloc((size_t)p.n * sizeof *v0);
         if (!v0) goto oom;
         memcpy(v0, v, (size_t)p.n * sizeof *v0);

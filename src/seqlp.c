@@ -971,23 +971,29 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     }
     s->time.detection += detection;
     /* Only joints with finite, non-zero friction dilate: without any, the
-     * associative answer is the non-associative one.  Without an
-     * associative answer there is nothing to start from: that result is
-     * returned as it is. */
+     * associative answer is the non-associative one.  An unbounded
+     * associative LP proves nothing without dilatancy (a block wedged
+     * between supports cannot slide out if its joints must open, but can
+     * if they need not): start 0 then begins from no normal forces, so
+     * that its first LP is the frictionless one, unbounded only where no
+     * mechanism at all can be driven by the live load (doc/theory.md 6,
+     * step 1).  Without any other associative answer there is nothing to
+     * start from: that result is returned as it is. */
     int sliding = 0;
     for (int k = 0; k < s->model->ninterfaces; k++) {
         double mu = s->model->interfaces[k].mu;
         sliding |= isfinite(mu) && mu > 0.0;
     }
-    if ((!sliding && o->when_sliding) || (s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) ||
-        !s->has_mechanism) {
+    int locked = sliding && s->status == BL_UNBOUNDED;
+    if ((!sliding && o->when_sliding) ||
+        (!locked && ((s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) || !s->has_mechanism))) {
         path_free(&pj);
         *out = s;
         return 0;
     }
     s->method = "seqlp";
     s->flow = "nonassociative";
-    s->alpha_assoc = s->alpha;
+    s->alpha_assoc = locked ? INFINITY : s->alpha;
     s->slip = o->slip;
     s->lps = 1;
     s->certified = 0;
@@ -1045,7 +1051,11 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     }
 
     /* Start 0 from the associative normal forces; then starts from random
-     * admissible stress states below the best alpha so far. */
+     * admissible stress states below the best alpha so far, and above the
+     * least alpha with an equilibrium where the dead load alone has none
+     * (below it the state's LP is infeasible and the restart lost: a block
+     * on a slope ran 8 of 11 starts). */
+    double least = s->stands == 0 && s->alpha_min > 0.0 ? s->alpha_min : 0.0;
     unsigned long long rng = o->seed;
     bl_lp_status stop = BL_LP_OPTIMAL;
     /* Without sliding joints the first LP settles and certifies at once.
@@ -1057,11 +1067,13 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         int lps0 = s->lps, its0 = s->iterations + r.iterations;
         double tk = bl_clock();
         if (k == 0) {
-            for (int p = 0; p < np; p++) r.n[p] = s->force[mc->dim * p] / r.fixed->W0;
+            for (int p = 0; p < np; p++) r.n[p] = locked ? 0.0 : s->force[mc->dim * p] / r.fixed->W0;
             if (path_answer(&pj, &r, s, err)) goto fail;
         } else {
+            if (!isfinite(from)) break; /* no alpha to draw below */
             bl_lp_status st;
-            if (random_state(&r, uniform(&rng) * from, &rng, o, &st, err)) goto fail;
+            double low = least < from ? least : 0.0;
+            if (random_state(&r, low + uniform(&rng) * (from - low), &rng, o, &st, err)) goto fail;
             s->lps++;
             if (st != BL_LP_OPTIMAL) {
                 /* Ctrl-C and the time limit end the run; a state that
@@ -1143,6 +1155,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         s->alpha_settled = r.best_settled;
         bl_solution_answer_status(s);
         s->certified = 1;
+        s->has_mechanism = 1; /* none from an unbounded associative LP */
         if (mc->dim == 3) {
             bl_system_forces3(r.cone, r.best_x, s->force);
             bl_system_mechanism3(r.fixed, mc, r.best_y, s->u);

@@ -101,6 +101,11 @@ for _, method in ipairs { "seqlp", "mpec" } do
   r = solve { method = method, progress = false }
   T.eq(r.status, "unstable", method .. ": block on a slope steeper than its friction: unstable")
   T.near(r.alpha_min, 0.5 - 0.4 * math.sqrt(3) / 2, 1e-9, method .. ": alpha_min = sin 30 - mu cos 30")
+  if method == "seqlp" then
+    -- the default 10 restarts of a small 2D model draw their stress states
+    -- at alpha in [alpha_min, alpha], where each has an equilibrium: all run
+    T.eq(#r.starts, 11, "seqlp: block on a steep slope: every one of the 10 restarts runs")
+  end
 end
 
 -- Pressed onto the slope by the live load (along -y of the tilted model),
@@ -120,6 +125,41 @@ for _, lp in ipairs { "simplex", "ipm" } do
          lp .. ": block pressed onto a steep slope: alpha_min = (sin 30 - mu cos 30) / mu")
 end
 T.ok(tostring(r):find("at least alpha = 0.383975", 1, true), "pressed block: print(r) gives the bottom")
+
+-- A unit block wedged in a slot between two supports, the live load
+-- lifting it.  With dilatancy its side joints would have to open, which
+-- the supports forbid: the associative LP is unbounded.  Without, it
+-- slides out; Eq. 12's least alpha takes no normal force at the sides,
+-- so that only the weight holds it: alpha = 1.  A block on flat ground
+-- pressed down has no mechanism for any flow rule: unbounded throughout.
+model { mu = 0.65 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+block { vertices = { { -1, -1 }, { 0, -1 }, { 0, 2 }, { -1, 2 } }, support = true }
+block { vertices = { { 1, -1 }, { 2, -1 }, { 2, 2 }, { 1, 2 } }, support = true }
+block { vertices = { { 0, -1 }, { 1, -1 }, { 1, 0 }, { 0, 0 } }, support = true }
+load { direction = { 0, 1 } }
+T.eq(solve({ flow = "associative" }).status, "unbounded", "block in a slot: the associative LP is unbounded")
+for _, lp in ipairs { "simplex", "ipm" } do
+  r = solve { lp = lp, progress = false }
+  T.ok(r.certified and r.verified and r.alpha_assoc == math.huge,
+       lp .. ": block in a slot, non-associative: certified and verified",
+       ("%s %s"):format(r.status, tostring(r.verified)))
+  T.near(r.alpha, 1, 1e-7, lp .. ": block in a slot, non-associative: alpha = 1 (its weight)")
+end
+T.ok(tostring(r):find("no associative alpha", 1, true), "block in a slot: print(r) says why there is no associative alpha")
+for _, start in ipairs { "assoc", "seqlp" } do
+  r = solve { method = "mpec", start = start, progress = false }
+  T.ok(r.verified, "block in a slot, mpec from " .. start .. ": verified", r.status)
+  T.near(r.alpha, 1, 1e-7, "block in a slot, mpec from " .. start .. ": alpha = 1")
+end
+model { mu = 0.65 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 0.5 }, { 0, 0.5 } } }
+block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+load { direction = { 0, -1 } }
+for _, method in ipairs { "seqlp", "mpec" } do
+  T.eq(solve({ method = method, progress = false }).status, "unbounded",
+       method .. ": block pressed onto flat ground: unbounded for the non-associative flow too")
+end
 
 -- A slope 3e-4 steeper than the friction angle (mu = 0.577 < tan 30): the
 -- interior point stalls short of so small an infeasibility; the simplex
