@@ -660,8 +660,11 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     const char *start_kind = o->start == BL_MPEC_START_COLD    ? "cold"
                              : o->start == BL_MPEC_START_ASSOC ? "assoc"
                                                                : "seqlp";
-    if (o->start == BL_MPEC_START_SEQLP && !s->x && s->status != BL_INTERRUPTED && !s->interrupted) {
-        /* no certified answer to start from: the associative one */
+    if (o->start == BL_MPEC_START_SEQLP && !s->x && s->status != BL_INTERRUPTED && !s->interrupted &&
+        s->status != BL_UNBOUNDED) {
+        /* no certified answer to start from: the associative one (but an
+         * unbounded sequence, no mechanism for any flow rule, is the
+         * answer) */
         bl_solution_free(s);
         if (bl_assoc_solve(m, &o->seq.base, &s, err)) return -1;
         start_kind = "assoc (the sequence of LPs did not certify)";
