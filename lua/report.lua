@@ -41,7 +41,10 @@ function Result.__tostring(r)
   if r.note and (not r.certified or r.interrupted) then say("  %s", r.note) end
   if r.alpha_assoc then
     local last = r.certified and not r.interrupted and ", the last one its certificate" or ""
-    if r.alpha_assoc == math.huge then
+    if r.alpha_assoc == math.huge and r.status == "unbounded" then
+      say("  the associative LP and the one without friction are both unbounded: no mechanism")
+      say("  moves, with dilatancy or without (%d LPs in the sequence)", r.lps)
+    elseif r.alpha_assoc == math.huge then
       say("  no associative alpha (unbounded: with dilatancy no mechanism moves); %d LPs in", r.lps)
       say("  the sequence%s; its first fixed LP has no friction", last)
     else

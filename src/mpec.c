@@ -661,10 +661,11 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
                              : o->start == BL_MPEC_START_ASSOC ? "assoc"
                                                                : "seqlp";
     if (o->start == BL_MPEC_START_SEQLP && !s->x && s->status != BL_INTERRUPTED && !s->interrupted &&
-        s->status != BL_UNBOUNDED) {
+        s->status != BL_UNBOUNDED && !(isinf(s->alpha_assoc) && s->alpha_assoc > 0)) {
         /* no certified answer to start from: the associative one (but an
          * unbounded sequence, no mechanism for any flow rule, is the
-         * answer) */
+         * answer, and where the associative LP is unbounded it is no
+         * start) */
         bl_solution_free(s);
         if (bl_assoc_solve(m, &o->seq.base, &s, err)) return -1;
         start_kind = "assoc (the sequence of LPs did not certify)";

@@ -42,6 +42,8 @@ typedef struct run {
     int shown;             /* a progress line is on the screen */
     int found;             /* a certified answer is kept in best_* */
     int least_n;           /* the fixed LPs prefer the least normal force */
+    int bounded;           /* some fixed LP of the run had an answer */
+    double first_alpha;    /* the alpha of the first one */
     int cone_other;        /* lp_cone was made with another objective than the
                               lowest alpha (lean_work, nearest_forces) */
     int rigid_beside;      /* the LP of unlimited friction runs on rigid_thread */
@@ -639,6 +641,17 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
         }
         s->lps++;
         s->iterations += bl_lp_iterations(r->lp_fixed);
+        if (st == BL_LP_UNBOUNDED && r->bounded) {
+            /* Whether a fixed LP is unbounded does not depend on its
+             * capacities (its dual, a mechanism, is feasible or not
+             * whatever they are): after one with an answer, this one's
+             * capacities have grown past what the engine tells from
+             * unbounded, and the start ends uncertified. */
+            snprintf(s->note, sizeof s->note,
+                     "start %d, LP %d: the relaxed friction capacities grew without bound",
+                     start_number(s), j + 1);
+            return 0;
+        }
         if (st != BL_LP_OPTIMAL) {
             /* Infeasible: the relaxed normal forces cannot carry some block
              * by friction alone (DESIGN 2.4); this start ends uncertified. */
@@ -646,6 +659,8 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
             else *stop = st;
             return 0;
         }
+        if (!r->bounded) r->first_alpha = bl_lp_primal(r->lp_fixed)[f->nforce];
+        r->bounded = 1;
         const double *x = bl_lp_primal(r->lp_fixed), *y = bl_lp_dual(r->lp_fixed);
         double a = x[f->nforce];
         if (append(s, a)) return bl_error_set(err, "solve: out of memory");
@@ -656,7 +671,9 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
             r->shown = 1;
         }
         int near_now = 0; /* the nearest forces follow this LP's failed certificate */
-        if (fabs(a - prev) <= o->settle * fabs(a)) {
+        /* (after an unbounded associative LP, prev is infinite: its
+         * frictionless first LP is certified at once) */
+        if (fabs(a - prev) <= o->settle * fabs(a) || isinf(prev)) {
             bl_lp_status cs;
             beside_cert c = {.r = r, .alpha = a, .y = r->yc, .o = o, .s = s};
             pthread_t other;
@@ -985,6 +1002,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         sliding |= isfinite(mu) && mu > 0.0;
     }
     int locked = sliding && s->status == BL_UNBOUNDED;
+    if (locked) path_free(&pj); /* it has no answer either: start 0 from no forces */
     if ((!sliding && o->when_sliding) ||
         (!locked && ((s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) || !s->has_mechanism))) {
         path_free(&pj);
@@ -1006,6 +1024,14 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.cone = build(mc, &pyramid, BL_FRICTION_CONE, err);
     r.fixed = r.cone ? build(mc, &pyramid, BL_FRICTION_FIXED, err) : NULL;
     if (!r.fixed) goto fail;
+    if (locked) {
+        /* Blocks confined so that dilatancy locks them carry any
+         * compression: from the first fixed LP on, the least normal force
+         * among the optimal force fields (LEAST_N), else the capacities
+         * grow from LP to LP (1 to 1e9 on a wall between abutments). */
+        r.least_n = 1;
+        bl_system_cost_normal(r.fixed, BL_LEAST_N, r.fixed->obj);
+    }
     int np = r.fixed->npoints, nc = r.fixed->ncols, ncc = r.cone->ncols;
     r.n = calloc((size_t)np + 1, sizeof *r.n);
     r.dn = calloc((size_t)np + 1, sizeof *r.dn);
@@ -1063,7 +1089,11 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     int retry = 0, starts = 0;
     start_state first = {0}; /* where start 0 stopped */
     for (int k = 0; k == 0 || (k <= starts && stop == BL_LP_OPTIMAL && !(retry && r.found)); k++) {
-        double from = r.found ? r.best_alpha : s->alpha_assoc;
+        /* (after an unbounded associative LP, below the first fixed LP's
+         * answer, at 0 where none had one) */
+        double from = r.found ? r.best_alpha
+                      : locked ? (r.bounded ? r.first_alpha : 0.0)
+                               : s->alpha_assoc;
         int lps0 = s->lps, its0 = s->iterations + r.iterations;
         double tk = bl_clock();
         if (k == 0) {
@@ -1072,7 +1102,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         } else {
             if (!isfinite(from)) break; /* no alpha to draw below */
             bl_lp_status st;
-            double low = least < from ? least : 0.0;
+            double low = least <= from ? least : 0.0;
             if (random_state(&r, low + uniform(&rng) * (from - low), &rng, o, &st, err)) goto fail;
             s->lps++;
             if (st != BL_LP_OPTIMAL) {
@@ -1179,7 +1209,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                     : s->stands == 0      ? BL_UNSTABLE
                                           : BL_UNCERTIFIED;
         s->has_mechanism = 0;
-        s->alpha = NAN; /* an LP of fixed capacities bounds nothing */
+        /* an LP of fixed capacities bounds nothing; unbounded, alpha is 0
+         * as from the associative LP */
+        s->alpha = s->status == BL_UNBOUNDED ? 0.0 : NAN;
         free(s->x);
         free(s->y);
         s->x = s->y = NULL; /* the associative start's, no longer the answer */

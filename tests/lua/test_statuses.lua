@@ -152,6 +152,39 @@ for _, start in ipairs { "assoc", "seqlp" } do
   T.ok(r.verified, "block in a slot, mpec from " .. start .. ": verified", r.status)
   T.near(r.alpha, 1, 1e-7, "block in a slot, mpec from " .. start .. ": alpha = 1")
 end
+-- A running-bond wall between two abutments as high as itself, lifted:
+-- again unbounded with dilatancy; without, the whole wall lifts once the
+-- live load equals its weight, alpha = 1 (693 rows: the interior point,
+-- whose fixed LPs took ever larger side forces until they prefer the
+-- least).  Tilted by 20 degrees, the sequence's capacities grow without
+-- bound from every start: never "unbounded", which the first LP's answer
+-- refutes.
+local function between_abutments(courses, width)
+  local E, U = { 0.5 }, {}
+  for i = 1, width - 1 do E[#E + 1] = 1 end
+  E[#E + 1] = 0.5
+  for i = 1, width do U[#U + 1] = 1 end
+  local C = {}
+  for c = 1, courses do C[c] = c % 2 == 1 and E or U end
+  wall { courses = C, unit = { 0.4, 0.175 } }
+  local H, L = courses * 0.175, width * 0.4
+  block { vertices = { { -0.4, -0.175 }, { 0, -0.175 }, { 0, H }, { -0.4, H } }, support = true }
+  block { vertices = { { L, -0.175 }, { L + 0.4, -0.175 }, { L + 0.4, H }, { L, H } }, support = true }
+end
+model { mu = 0.65 }
+between_abutments(14, 16)
+load { direction = { 0, 1 } }
+r = solve { progress = false }
+T.ok(r.certified and r.verified and r.lp == "ipm", "wall between abutments, lifted: certified and verified on the interior point",
+     ("%s %s %s"):format(r.status, tostring(r.verified), r.lp))
+T.near(r.alpha, 1, 1e-6, "wall between abutments, lifted: alpha = 1 (its weight)")
+model { mu = 0.65 }
+between_abutments(4, 5)
+load { direction = { 0, 1 }, tilt = 20 }
+r = solve { progress = false, starts = 2 }
+T.ok(r.status ~= "unbounded" and (r.status == "not certified" or r.verified),
+     "wall between abutments, tilted and lifted: no false 'unbounded'", r.status)
+
 model { mu = 0.65 }
 block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 0.5 }, { 0, 0.5 } } }
 block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
