@@ -336,6 +336,14 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         s->stands = dead.status == BL_LP_OPTIMAL ? 1 : dead.status == BL_LP_INFEASIBLE ? 0 : -1;
         double ta = bl_clock();
         if (s->stands == 0) s->alpha_min = alpha_min(check, check == sys && how == o ? lp : NULL, how);
+        /* The equilibria at alpha_min and at the answer's alpha bracket 0
+         * where alpha_min <= 0, and their mean by weights is one at 0: a
+         * check that said otherwise was wrong (a dual simplex on a model
+         * whose joints cannot slide) */
+        if (s->stands == 0 && s->alpha_min <= 0.0 && s->alpha >= 0.0) {
+            s->stands = 1;
+            s->alpha_min = NAN;
+        }
         if (check != sys) bl_system_free(check);
         if (s->status == BL_OPTIMAL) {
             bl_solution_answer_status(s);

@@ -64,9 +64,13 @@ static void *create(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *e
             obj[j] = -p->obj[j]; // CLP minimizes
         }
         std::vector<CoinBigIndex> start(p->colptr, p->colptr + p->ncols + 1);
+        // (free columns excepted: with them, joints that cannot slide, the
+        // dual simplex called a check infeasible whose alpha_min was
+        // below 0)
         lp->feasibility = true;
         for (int j = 0; j < p->ncols; j++)
-            lp->feasibility = lp->feasibility && (obj[j] == 0.0 || lo[j] == hi[j]);
+            lp->feasibility = lp->feasibility && (obj[j] == 0.0 || lo[j] == hi[j]) &&
+                              !(std::isinf(lo[j]) && std::isinf(hi[j]));
         lp->model.loadProblem(p->ncols, p->nrows, start.data(), p->rowind, p->val, lo.data(),
                               hi.data(), obj.data(), p->rhs, p->rhs);
         lp->model.setLogLevel(s->verbose ? 1 : 0);

@@ -17,20 +17,46 @@ static void work(const bl_system *s, double alpha, const double *y, double dissi
     res->work = scale > 0.0 ? fabs(alpha * fLu + fDu - dissipation) / scale : 0.0;
 }
 
+/* Equilibrium, in units of the typical block weight W0, and for a block
+ * lighter than that (whose loads and forces are all small) in units of
+ * its own: a block 1e-13 as heavy as the rest left its whole weight
+ * unbalanced, and its LP a wrong alpha, at 5e-14 W0 (doc/theory.md 5).
+ * r receives the residual rows; -1 when out of memory. */
+static int equilibrium(const bl_system *s, const double *x, double alpha, double *r, double *eq)
+{
+    double *scale = calloc((size_t)s->nrows + 1, sizeof *scale);
+    if (!scale) return -1;
+    bl_system_residual(s, x, alpha, r);
+    for (int i = 0; i < s->nrows; i++) scale[i] = fabs(s->rhs[i]);
+    for (int j = 0; j < s->ncols; j++) {
+        double xj = j < s->nforce ? x[j] : alpha;
+        for (int p = s->colptr[j]; p < s->colptr[j + 1]; p++) scale[s->rowind[p]] += fabs(s->val[p] * xj);
+    }
+    int rows = s->dim == 3 ? 6 : 3; /* a block's, one after the other */
+    *eq = 0.0;
+    for (int b = 0; b < s->nrows; b += rows) {
+        double S = 0.0, worst = 0.0;
+        for (int i = b; i < b + rows && i < s->nrows; i++) {
+            S = fmax(S, scale[i]);
+            worst = fmax(worst, fabs(r[i]));
+        }
+        *eq = fmax(*eq, S > 0.0 && S < 1.0 ? worst / S : worst);
+    }
+    free(scale);
+    return 0;
+}
+
 int bl_verify(const bl_system *s, double alpha, const double *x, const double *y, double tol,
               bl_residuals *res)
 {
     double *r = malloc((size_t)(s->nrows > s->nforce ? s->nrows : s->nforce + 1) * sizeof *r);
-    if (!r) {
+    double eq = 0.0;
+    if (!r || equilibrium(s, x, alpha, r, &eq)) {
+        free(r);
         res->equilibrium = res->yield = res->admissibility = res->complementarity =
             res->normalization = res->work = INFINITY;
         return 0;
     }
-
-    /* Equilibrium, in units of the typical block weight W0. */
-    bl_system_residual(s, x, alpha, r);
-    double eq = 0.0;
-    for (int i = 0; i < s->nrows; i++) eq = fmax(eq, fabs(r[i]));
 
     /* Yield: how far a force column lies outside its bounds. */
     double yield = 0.0, X = 0.0;
@@ -99,9 +125,8 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     int d3 = cone->dim == 3, st = cone->dim;
 
     /* statics, on the cone system */
-    bl_system_residual(cone, xc, alpha, w);
     double eq = 0.0;
-    for (int i = 0; i < cone->nrows; i++) eq = fmax(eq, fabs(w[i]));
+    if (equilibrium(cone, xc, alpha, w, &eq)) eq = INFINITY;
     double yield = 0.0;
     for (int p = 0; p < np; p++) n[p] = t[p] = t3[p] = dt3[p] = 0.0;
     for (int j = 0; j < cone->nforce; j++) {

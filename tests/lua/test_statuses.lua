@@ -196,6 +196,49 @@ for _, method in ipairs { "seqlp", "mpec" } do
        ("%s %s"):format(r.status, r.flow))
 end
 
+-- Joints that cannot slide (mu = inf: free shear columns), four blocks on
+-- a base.  The live load reversed also gives a positive alpha, so the
+-- multipliers with an equilibrium span [-alpha', alpha] and include 0: the
+-- structure stands.  (The dual simplex, started cold on the check, called
+-- it infeasible.)
+do
+  local function rect(x0, y0, x1, y1) return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } } end
+  model { mu = math.huge }
+  block { vertices = rect(0, 0, 0.5, 0.2) }
+  block { vertices = rect(1.1, 0, 2, 0.2) }
+  block { vertices = rect(0.3, 0.2, 1, 1) }
+  block { vertices = rect(1, 0.2, 1.2, 1) }
+  block { vertices = rect(-0.5, -0.3, 2.5, 0), support = true }
+  load { direction = { -1, 0 } }
+  local back = solve { lp = "simplex" }
+  load { direction = { 1, 0 } }
+  for _, lp in ipairs { "simplex", "ipm" } do
+    r = solve { lp = lp }
+    T.ok(back.alpha > 0 and r.alpha > 0 and r.status == "optimal" and r.stands == true,
+         lp .. ": blocks that cannot slide, alpha > 0 both ways: they stand",
+         ("%s %s stands %s"):format(r.status, tostring(r.alpha), tostring(r.stands)))
+  end
+end
+
+-- A block 1e-13 as heavy as the pier it sits on: a load proportional to
+-- weight makes the pier rock at b/h = 1/3 and the light block slide at mu
+-- or rock at its own b/h, whatever its density, so alpha = 1/3.  Its
+-- weight lies below the LPs' tolerances: an answer may come out wrong, but
+-- never verified (its equilibrium is measured against its own weight).
+do
+  local function rect(x0, y0, x1, y1) return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } } end
+  model { mu = 0.6 }
+  block { vertices = rect(0, 0, 1, 3) }
+  block { vertices = rect(0, 3, 1, 3.5), density = 1e-13 }
+  block { vertices = rect(-1, -0.3, 2, 0), support = true }
+  for _, flow in ipairs { "associative", "nonassociative" } do
+    r = solve { flow = flow, progress = false }
+    T.ok(not r.verified or math.abs(r.alpha - 1 / 3) < 1e-6,
+         flow .. ": a block 1e-13 as heavy as the rest: verified only with alpha = 1/3",
+         ("%s %s verified %s"):format(r.status, tostring(r.alpha), tostring(r.verified)))
+  end
+end
+
 -- A slope 3e-4 steeper than the friction angle (mu = 0.577 < tan 30): the
 -- interior point stalls short of so small an infeasibility; the simplex
 -- decides the check for it.
