@@ -89,7 +89,10 @@ bl_status bl_status_of_lp(bl_lp_status st)
 
 void bl_solution_answer_status(bl_solution *s)
 {
-    if (s->alpha < 0.0) s->stands = 0;
+    /* alpha within the tolerance below 0 is 0 to round-off (the interior
+     * point's -1e-10 where blocks rest on frictionless joints): the
+     * dead-load check decides it, as it does alpha >= 0 */
+    if (s->alpha < -s->tolerance) s->stands = 0;
     s->status = s->stands == 0 ? BL_UNSTABLE : BL_OPTIMAL;
 }
 

@@ -220,6 +220,19 @@ do
   end
 end
 
+-- A parallelogram whose centroid lies exactly over its base's edge: it is
+-- at the point of rocking, alpha = 0, and stands.  The interior point's
+-- -3e-10 is 0 to round-off, not "unstable".
+model { mu = 0.65 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 2, 1 }, { 1, 1 } } }
+block { vertices = { { -1, -1 }, { 3, -1 }, { 3, 0 }, { -1, 0 } }, support = true }
+for _, lp in ipairs { "simplex", "ipm" } do
+  r = solve { lp = lp, flow = "associative" }
+  T.ok(r.status == "optimal" and r.stands == true and math.abs(r.alpha) < 1e-7,
+       lp .. ": centroid over the base's edge: alpha = 0, optimal, stands",
+       ("%s %s stands %s"):format(r.status, tostring(r.alpha), tostring(r.stands)))
+end
+
 -- A block 1e-13 as heavy as the pier it sits on: a load proportional to
 -- weight makes the pier rock at b/h = 1/3 and the light block slide at mu
 -- or rock at its own b/h, whatever its density, so alpha = 1/3.  Its
