@@ -4,7 +4,10 @@
 #include <stdlib.h>
 
 /* Normalization and the virtual-work balance: the static alpha equals the
- * kinematic one, (dissipation - fD . u) / fL . u. */
+ * kinematic one, (dissipation - fD . u) / fL . u, relative to the larger
+ * of the works and the live load's unit work fL . u (where alpha = 0 and
+ * nothing works, a block on a frictionless joint, the works alone left
+ * round-off over round-off). */
 static void work(const bl_system *s, double alpha, const double *y, double dissipation,
                  bl_residuals *res)
 {
@@ -12,7 +15,7 @@ static void work(const bl_system *s, double alpha, const double *y, double dissi
     for (int j = s->colptr[s->nforce]; j < s->colptr[s->nforce + 1]; j++)
         fLu += s->val[j] * y[s->rowind[j]];
     for (int i = 0; i < s->nrows; i++) fDu -= s->rhs[i] * y[i];
-    double scale = fabs(alpha * fLu) + fabs(fDu) + fabs(dissipation);
+    double scale = fmax(fabs(alpha * fLu) + fabs(fDu) + fabs(dissipation), fabs(fLu));
     res->normalization = fabs(fLu - 1.0);
     res->work = scale > 0.0 ? fabs(alpha * fLu + fDu - dissipation) / scale : 0.0;
 }

@@ -233,6 +233,18 @@ for _, lp in ipairs { "simplex", "ipm" } do
        ("%s %s stands %s"):format(r.status, tostring(r.alpha), tostring(r.stands)))
 end
 
+-- A block on a frictionless joint: alpha = min(mu, b/h) = 0, and nothing
+-- works in its mechanism (it slides, and neither load works along it
+-- against a dissipation of 0): verified by its work balance all the same.
+model { mu = 0 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+block { vertices = { { -1, -0.3 }, { 2, -0.3 }, { 2, 0 }, { -1, 0 } }, support = true }
+for _, lp in ipairs { "simplex", "ipm" } do
+  r = solve { lp = lp, flow = "associative" }
+  T.ok(math.abs(r.alpha) < 1e-7 and r.verified, lp .. ": block on a frictionless joint: alpha = 0, verified",
+       ("%s verified %s, work %g"):format(tostring(r.alpha), tostring(r.verified), r.residuals.work))
+end
+
 -- A block 1e-13 as heavy as the pier it sits on: a load proportional to
 -- weight makes the pier rock at b/h = 1/3 and the light block slide at mu
 -- or rock at its own b/h, whatever its density, so alpha = 1/3.  Its
