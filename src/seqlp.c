@@ -659,10 +659,10 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
             else *stop = st;
             return 0;
         }
-        if (!r->bounded) r->first_alpha = bl_lp_primal(r->lp_fixed)[f->nforce];
-        r->bounded = 1;
         const double *x = bl_lp_primal(r->lp_fixed), *y = bl_lp_dual(r->lp_fixed);
         double a = x[f->nforce];
+        if (!r->bounded) r->first_alpha = a;
+        r->bounded = 1;
         if (append(s, a)) return bl_error_set(err, "solve: out of memory");
         if (o->base.verbose)
             fprintf(stderr, "seqlp start %d LP %d: alpha %.8g\n", start_number(s), j + 1, a);
