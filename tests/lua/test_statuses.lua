@@ -196,13 +196,15 @@ for _, method in ipairs { "seqlp", "mpec" } do
        ("%s %s"):format(r.status, r.flow))
 end
 
+-- An axis-aligned rectangle's vertices.
+local function rect(x0, y0, x1, y1) return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } } end
+
 -- Joints that cannot slide (mu = inf: free shear columns), four blocks on
 -- a base.  The live load reversed also gives a positive alpha, so the
 -- multipliers with an equilibrium span [-alpha', alpha] and include 0: the
 -- structure stands.  (The dual simplex, started cold on the check, called
 -- it infeasible.)
 do
-  local function rect(x0, y0, x1, y1) return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } } end
   model { mu = math.huge }
   block { vertices = rect(0, 0, 0.5, 0.2) }
   block { vertices = rect(1.1, 0, 2, 0.2) }
@@ -251,7 +253,6 @@ end
 -- weight lies below the LPs' tolerances: an answer may come out wrong, but
 -- never verified (its equilibrium is measured against its own weight).
 do
-  local function rect(x0, y0, x1, y1) return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } } end
   model { mu = 0.6 }
   block { vertices = rect(0, 0, 1, 3) }
   block { vertices = rect(0, 3, 1, 3.5), density = 1e-13 }
