@@ -16,6 +16,7 @@ void bl_system_free(bl_system *s)
     free(s->rhs);
     free(s->obj);
     free(s->block_row);
+    free(s->row_scale);
     free(s->col_point);
     free(s->col_kind);
     free(s->col_nt);
@@ -86,10 +87,54 @@ int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max)
                : -1;
 }
 
-bl_system *bl_system_finish(bl_system *s, int nz, const double *fL, bl_error *err)
+/* The rows of a block whose own loads (its weight, point loads, the live
+ * load; fD and fL in units of W0) stay below LIGHT_LOAD are multiplied by
+ * LIGHT_LOAD over them, at most LIGHT_SCALE_MAX: an LP engine's residuals
+ * are relative to the largest load, and a block 10^-5 as heavy as W0 was
+ * left unbalanced by its own weight within them (the interior point's
+ * "numerical trouble" or a wrong alpha; doc/theory.md 2.3).  Its dual
+ * rows, the block's velocity, are divided by the same factor
+ * (bl_system_velocity undoes it).  A model without such a block is
+ * assembled as before, row_scale NULL. */
+#define LIGHT_LOAD 0.1
+#define LIGHT_SCALE_MAX 1e8
+
+static int scale_light_blocks(bl_system *s, double *fL)
+{
+    int per = s->dim == 3 ? 6 : 3;
+    for (int r0 = 0; r0 < s->nrows; r0 += per) {
+        double load = 0.0;
+        for (int i = r0; i < r0 + per; i++) load = fmax(load, fmax(fabs(s->rhs[i]), fabs(fL[i])));
+        if (!(load > 0.0) || load >= LIGHT_LOAD) continue;
+        if (!s->row_scale) {
+            if (!(s->row_scale = malloc((size_t)s->nrows * sizeof *s->row_scale))) return -1;
+            for (int i = 0; i < s->nrows; i++) s->row_scale[i] = 1.0;
+        }
+        for (int i = r0; i < r0 + per; i++) s->row_scale[i] = fmin(LIGHT_LOAD / load, LIGHT_SCALE_MAX);
+    }
+    if (!s->row_scale) return 0;
+    for (int p = 0; p < s->colptr[s->nforce]; p++) s->val[p] *= s->row_scale[s->rowind[p]];
+    for (int i = 0; i < s->nrows; i++) {
+        s->rhs[i] *= s->row_scale[i];
+        fL[i] *= s->row_scale[i];
+    }
+    return 0;
+}
+
+double bl_system_velocity(const bl_system *s, const double *y, int row)
+{
+    return s->row_scale ? y[row] * s->row_scale[row] : y[row];
+}
+
+bl_system *bl_system_finish(bl_system *s, int nz, double *fL, bl_error *err)
 {
     int c = s->nforce;
     s->colptr[c] = nz;
+    if (scale_light_blocks(s, fL)) {
+        bl_system_free(s);
+        bl_error_set(err, "solve: out of memory assembling the equilibrium system");
+        return NULL;
+    }
     s->lo[c] = -INFINITY;
     s->hi[c] = INFINITY;
     s->obj[c] = 1.0;
@@ -313,9 +358,9 @@ void bl_system_mechanism(const bl_system *s, const bl_model *m, const double *y,
             ui[0] = ui[1] = ui[2] = 0.0;
             continue;
         }
-        ui[0] = y[r] / s->W0;
-        ui[1] = y[r + 1] / s->W0;
-        ui[2] = y[r + 2] / (s->W0 * s->L0);
+        ui[0] = bl_system_velocity(s, y, r) / s->W0;
+        ui[1] = bl_system_velocity(s, y, r + 1) / s->W0;
+        ui[2] = bl_system_velocity(s, y, r + 2) / (s->W0 * s->L0);
     }
 }
 

@@ -68,6 +68,8 @@ typedef struct bl_system {
                               * for a pyramid edge, 1 for a twist or cohesive couple);
                               * 0 otherwise */
     double L0, W0;           /* length and force scales */
+    double *row_scale;       /* per row: the factor a light block's rows were
+                              * multiplied by (bl_system_finish), NULL: all 1 */
     bl_friction_form form;
     double *cohesion;        /* per contact point: C_p / W0 (3D resultant model:
                               * the joint's c A / W0 at its lead point, 0 at
@@ -142,7 +144,12 @@ void bl_system_free(bl_system *s);
  * set, the system freed, when there is no live load). */
 bl_system *bl_system_start(const bl_model *m, int per_block, bl_error *err);
 int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max);
-bl_system *bl_system_finish(bl_system *s, int nz, const double *fL, bl_error *err);
+bl_system *bl_system_finish(bl_system *s, int nz, double *fL, bl_error *err);
+
+/* Row `row` of the LP's dual y in the rows' units before the scaling of
+ * light blocks (bl_system_finish): a block velocity times W0 (forces) or
+ * W0 L0 (moments). */
+double bl_system_velocity(const bl_system *s, const double *y, int row);
 
 /* Physical contact forces (n0, t0, n1, t1 per interface) from x. */
 void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, double *force);

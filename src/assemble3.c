@@ -374,7 +374,7 @@ void bl_system_mechanism3(const bl_system *s, const bl_model *m, const double *y
         int r = s->block_row[i];
         double *ui = u + 6 * i;
         for (int c = 0; c < 6; c++)
-            ui[c] = r < 0 ? 0.0 : y[r + c] / (c < 3 ? s->W0 : s->W0 * s->L0);
+            ui[c] = r < 0 ? 0.0 : bl_system_velocity(s, y, r + c) / (c < 3 ? s->W0 : s->W0 * s->L0);
     }
 }
 
@@ -396,8 +396,10 @@ void bl_system_slip3(const bl_system *s, const bl_model *m, const double *y, dou
                 int r = s->block_row[blk[side]];
                 if (r < 0) continue;
                 bl_vec3 arm = bl_v3_scale(bl_v3_sub(at, m->blocks[blk[side]].centroid3), 1.0 / s->L0);
-                bl_vec3 v = bl_v3_add(bl_v3(y[r], y[r + 1], y[r + 2]),
-                                      bl_v3_cross(bl_v3(y[r + 3], y[r + 4], y[r + 5]), arm));
+                double yb[6];
+                for (int c = 0; c < 6; c++) yb[c] = bl_system_velocity(s, y, r + c);
+                bl_vec3 v = bl_v3_add(bl_v3(yb[0], yb[1], yb[2]),
+                                      bl_v3_cross(bl_v3(yb[3], yb[4], yb[5]), arm));
                 d = side ? bl_v3_add(d, v) : bl_v3_sub(d, v);
             }
             slip[2 * point] = bl_v3_dot(d, in->t2);

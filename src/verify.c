@@ -24,56 +24,73 @@ static void work(const bl_system *s, double alpha, const double *y, double dissi
  * lighter than that (whose loads and forces are all small) in units of
  * its own: a block 1e-13 as heavy as the rest left its whole weight
  * unbalanced, and its LP a wrong alpha, at 5e-14 W0 (doc/theory.md 5).
- * r receives the residual rows; -1 when out of memory. */
-static int equilibrium(const bl_system *s, const double *x, double alpha, double *r, double *eq)
+ * r receives the residual rows, S (nrows) each row's block scale in units
+ * of W0 (the largest of its rows' loads and force terms, before the
+ * scaling of light blocks, bl_system_finish). */
+static void equilibrium(const bl_system *s, const double *x, double alpha, double *r, double *S,
+                       double *eq)
 {
-    double *scale = calloc((size_t)s->nrows + 1, sizeof *scale);
-    if (!scale) return -1;
     bl_system_residual(s, x, alpha, r);
-    for (int i = 0; i < s->nrows; i++) scale[i] = fabs(s->rhs[i]);
+    for (int i = 0; i < s->nrows; i++) S[i] = fabs(s->rhs[i]);
     for (int j = 0; j < s->ncols; j++) {
         double xj = j < s->nforce ? x[j] : alpha;
-        for (int p = s->colptr[j]; p < s->colptr[j + 1]; p++) scale[s->rowind[p]] += fabs(s->val[p] * xj);
+        for (int p = s->colptr[j]; p < s->colptr[j + 1]; p++) S[s->rowind[p]] += fabs(s->val[p] * xj);
     }
     int rows = s->dim == 3 ? 6 : 3; /* a block's, one after the other */
     *eq = 0.0;
     for (int b = 0; b < s->nrows; b += rows) {
-        double S = 0.0, worst = 0.0;
+        double Sb = 0.0, worst = 0.0;
         for (int i = b; i < b + rows && i < s->nrows; i++) {
-            S = fmax(S, scale[i]);
-            worst = fmax(worst, fabs(r[i]));
+            double unscale = s->row_scale ? 1.0 / s->row_scale[i] : 1.0;
+            Sb = fmax(Sb, S[i] * unscale);
+            worst = fmax(worst, fabs(r[i]) * unscale);
         }
-        *eq = fmax(*eq, S > 0.0 && S < 1.0 ? worst / S : worst);
+        for (int i = b; i < b + rows && i < s->nrows; i++) S[i] = Sb;
+        *eq = fmax(*eq, Sb > 0.0 && Sb < 1.0 ? worst / Sb : worst);
     }
-    free(scale);
-    return 0;
+}
+
+/* Yield: how far force column j lies outside its bounds, in units of W0,
+ * or of the scale S of the lighter of its blocks where that is below W0
+ * (a bound broken by 3e-13 at the joint of a block weighing 6e-13 is
+ * broken by half the block's forces). */
+static double yield_violation(const bl_system *s, const double *S, int j, double xj)
+{
+    double v = fmax(s->lo[j] - xj, xj - s->hi[j]);
+    if (!(v > 0.0)) return 0.0;
+    double local = 1.0;
+    for (int p = s->colptr[j]; p < s->colptr[j + 1]; p++) local = fmin(local, S[s->rowind[p]]);
+    return local > 0.0 ? v / local : INFINITY;
 }
 
 int bl_verify(const bl_system *s, double alpha, const double *x, const double *y, double tol,
               bl_residuals *res)
 {
     double *r = malloc((size_t)(s->nrows > s->nforce ? s->nrows : s->nforce + 1) * sizeof *r);
+    double *S = malloc(((size_t)s->nrows + 1) * sizeof *S);
     double eq = 0.0;
-    if (!r || equilibrium(s, x, alpha, r, &eq)) {
+    if (!r || !S) {
         free(r);
+        free(S);
         res->equilibrium = res->yield = res->admissibility = res->complementarity =
             res->normalization = res->work = INFINITY;
         return 0;
     }
+    equilibrium(s, x, alpha, r, S, &eq);
 
-    /* Yield: how far a force column lies outside its bounds. */
     double yield = 0.0, X = 0.0;
     for (int j = 0; j < s->nforce; j++) {
-        yield = fmax(yield, fmax(s->lo[j] - x[j], x[j] - s->hi[j]));
+        yield = fmax(yield, yield_violation(s, S, j, x[j]));
         X = fmax(X, fabs(x[j]));
     }
+    free(S);
     if (X == 0.0) X = 1.0;
 
     /* Kinematics: w_j = (A^T y)_j is the power of a unit value of column j,
      * the relative velocity along the column's force direction.  V is the
      * velocity scale: the largest block velocity (omega times L0). */
     double V = 0.0;
-    for (int i = 0; i < s->nrows; i++) V = fmax(V, fabs(y[i]));
+    for (int i = 0; i < s->nrows; i++) V = fmax(V, fabs(bl_system_velocity(s, y, i)));
     if (V == 0.0) V = 1.0;
     double *w = r;
     bl_system_power(s, y, w);
@@ -111,9 +128,11 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     if (cone->nforce > nw) nw = cone->nforce;
     double *w = malloc(((size_t)nw + 1) * sizeof *w);
     double *buf = malloc((9 * (size_t)np + 1) * sizeof *buf);
-    if (!w || !buf) {
+    double *S = malloc(((size_t)cone->nrows + 1) * sizeof *S);
+    if (!w || !buf || !S) {
         free(w);
         free(buf);
+        free(S);
         res->equilibrium = res->yield = res->admissibility = res->complementarity =
             res->normalization = res->work = res->flow = res->dilatancy = INFINITY;
         return 0;
@@ -129,11 +148,11 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
 
     /* statics, on the cone system */
     double eq = 0.0;
-    if (equilibrium(cone, xc, alpha, w, &eq)) eq = INFINITY;
+    equilibrium(cone, xc, alpha, w, S, &eq);
     double yield = 0.0;
     for (int p = 0; p < np; p++) n[p] = t[p] = t3[p] = dt3[p] = 0.0;
     for (int j = 0; j < cone->nforce; j++) {
-        yield = fmax(yield, fmax(cone->lo[j] - xc[j], xc[j] - cone->hi[j]));
+        yield = fmax(yield, yield_violation(cone, S, j, xc[j]));
         n[cone->col_point[j]] += xc[j] * cone->col_nt[st * j];
         t[cone->col_point[j]] += xc[j] * cone->col_nt[st * j + 1];
         if (d3) t3[cone->col_point[j]] += xc[j] * cone->col_nt[3 * j + 2];
@@ -207,6 +226,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     res->dilatancy = dil;
     free(w);
     free(buf);
+    free(S);
     return res->equilibrium <= tol && res->yield <= tol && res->admissibility <= tol &&
            res->normalization <= tol && res->complementarity <= slip && res->flow <= slip &&
            res->dilatancy <= slip && res->work <= slip;
