@@ -1107,21 +1107,24 @@ static int model_solve(lua_State *L)
     if (so.beta > 1) fail(L, "solve: field 'beta' must be in (0, 1], got %g", so.beta);
     so.settle = number_field(L, 2, "solve", "settle", so.settle, POSITIVE);
     so.slip = number_field(L, 2, "solve", "slip", so.slip, POSITIVE);
+    if (so.slip > 1e-2)
+        fail(L, "solve: field 'slip' must be in (0, 0.01] (a fraction of the largest motion "
+                "below which a motion counts as none), got %g", so.slip);
     double cap = number_field(L, 2, "solve", "lps", so.max_lps, ANY);
     if (cap != floor(cap) || cap < 2 || cap > 1e6)
-        fail(L, "solve: field 'lps' must be an integer of at least 2, got %g", cap);
+        fail(L, "solve: field 'lps' must be an integer from 2 to 1000000, got %g", cap);
     so.max_lps = (int)cap;
     double starts = number_field(L, 2, "solve", "starts", -1, NONNEG);
     if (starts != floor(starts) || starts > 1e6 || (starts < 0 && field_given(L, 2, "starts")))
-        fail(L, "solve: field 'starts' must be a non-negative integer, got %g", starts);
+        fail(L, "solve: field 'starts' must be an integer from 0 to 1000000, got %g", starts);
     so.starts = (int)starts;
     double seed = number_field(L, 2, "solve", "seed", 1, NONNEG);
     if (seed != floor(seed) || seed > 9e15)
-        fail(L, "solve: field 'seed' must be a non-negative integer, got %g", seed);
+        fail(L, "solve: field 'seed' must be an integer from 0 to 9e15, got %g", seed);
     so.seed = (unsigned long long)seed;
     double nearest = number_field(L, 2, "solve", "nearest", -1, NONNEG);
     if (nearest != floor(nearest) || nearest > 1e6 || (nearest < 0 && field_given(L, 2, "nearest")))
-        fail(L, "solve: field 'nearest' must be a non-negative integer, got %g", nearest);
+        fail(L, "solve: field 'nearest' must be an integer from 0 to 1000000, got %g", nearest);
     so.nearest = (int)nearest;
     so.progress = boolean_field(L, 2, "solve", "progress", isatty(STDERR_FILENO));
     so.path = field_given(L, 2, "path") ? boolean_field(L, 2, "solve", "path", 0) : -1;

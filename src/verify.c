@@ -227,7 +227,8 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     free(w);
     free(buf);
     free(S);
+    double ftol = fmin(slip, BL_FLOW_TOL_MAX);
     return res->equilibrium <= tol && res->yield <= tol && res->admissibility <= tol &&
-           res->normalization <= tol && res->complementarity <= slip && res->flow <= slip &&
-           res->dilatancy <= slip && res->work <= slip;
+           res->normalization <= tol && res->complementarity <= ftol && res->flow <= ftol &&
+           res->dilatancy <= ftol && res->work <= ftol;
 }
