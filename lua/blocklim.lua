@@ -68,15 +68,18 @@ return function(core)
 
   -- The commands written in Lua.  Whatever goes wrong inside one (its own
   -- checks, or a command it calls, such as block{} for each block of a
-  -- wall) is raised again at the user's call: without this module's file
-  -- and line, and starting with the command's name.
+  -- wall, or Ctrl-C) is raised again at the user's call: without this
+  -- module's file and line, and starting with the command's name; the
+  -- blocks it had made are removed, so the model is as it was.
   local function guard(name, f)
     return function(...)
       if not current then
         error(name .. ": no current model; start one with model{ mu = 0.65 }", 2)
       end
+      local m, before = current, core.blocks(current)
       local res = table.pack(pcall(f, ...))
       if res[1] then return table.unpack(res, 2, res.n) end
+      core.truncate(m, before)
       local msg = res[2]
       if type(msg) ~= "string" then error(msg, 0) end
       msg = msg:gsub("^%[blocklim [%w_]+%.lua%]:%d+: ", "")

@@ -24,11 +24,11 @@ return function(M)
           :format(tostring(k)))
       end
     end
+    local function finite(v) return type(v) == "number" and v == v and math.abs(v) < math.huge end
     local courses, unit = t.courses, t.unit or { 0.4, 0.175 }
     if type(courses) ~= "table" or #courses == 0 then
       fail("field 'courses' must be a non-empty list of course patterns")
     end
-    local function finite(v) return type(v) == "number" and v == v and math.abs(v) < math.huge end
     if type(unit) ~= "table" or #unit ~= 2 or not finite(unit[1]) or not finite(unit[2])
         or not (unit[1] > 0 and unit[2] > 0) then
       fail("field 'unit' must be {L, H} with two positive numbers")
@@ -49,8 +49,8 @@ return function(M)
       end
       local len = 0
       for e, v in ipairs(course) do
-        if type(v) ~= "number" or v == 0 or v ~= v then
-          fail(("field 'courses' course %d entry %d must be a non-zero length, got %s")
+        if not finite(v) or v == 0 then
+          fail(("field 'courses' course %d entry %d must be a finite non-zero length, got %s")
             :format(c, e, tostring(v)))
         end
         len = len + math.abs(v)

@@ -1259,6 +1259,21 @@ static int core_vtk(lua_State *L)
 }
 
 /* core.clock() -> wall-clock seconds, for timing scripts */
+/* core.blocks(m): how many blocks the model has, supports included;
+ * core.truncate(m, n): back to its first n (the Lua commands that make
+ * several blocks undo a failure with them). */
+static int core_blocks(lua_State *L)
+{
+    lua_pushinteger(L, check_model(L, 1)->nblocks);
+    return 1;
+}
+
+static int core_truncate(lua_State *L)
+{
+    bl_model_truncate(check_model(L, 1), (int)luaL_checkinteger(L, 2));
+    return 0;
+}
+
 static int core_clock(lua_State *L)
 {
     lua_pushnumber(L, bl_clock());
@@ -1295,6 +1310,7 @@ int luaopen_blocklim(lua_State *L)
         {"interface_info", model_interface_info}, {NULL, NULL}};
     static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw},
                                      {"clock", core_clock}, {"last", core_last}, {"vtk", core_vtk},
+                                     {"blocks", core_blocks}, {"truncate", core_truncate},
                                      {NULL, NULL}};
 
     if (luaL_newmetatable(L, MODEL_MT)) {

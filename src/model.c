@@ -203,6 +203,26 @@ void bl_model_clear_interfaces(bl_model *m)
     m->ninterfaces = 0;
 }
 
+void bl_model_truncate(bl_model *m, int nblocks)
+{
+    if (nblocks < 0 || nblocks >= m->nblocks) return;
+    for (int i = nblocks; i < m->nblocks; i++) {
+        free(m->blocks[i].v);
+        bl_polyhedron_free(&m->blocks[i].solid);
+    }
+    m->nblocks = nblocks;
+    int k = 0;
+    for (int j = 0; j < m->njoints; j++)
+        if (m->joints[j].a < nblocks && m->joints[j].b < nblocks) m->joints[k++] = m->joints[j];
+    m->njoints = k;
+    k = 0;
+    for (int l = 0; l < m->nloads; l++)
+        if (m->loads[l].block < nblocks) m->loads[k++] = m->loads[l];
+    m->nloads = k;
+    bl_model_clear_interfaces(m);
+    m->contacts_valid = 0;
+}
+
 int bl_model_add_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
 {
     if (RESERVE(m->joints, m->cap_joints, m->njoints + 1))

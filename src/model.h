@@ -147,6 +147,11 @@ int bl_model_add_point_load(bl_model *m, const bl_point_load *l, bl_error *err);
 /* Removes every interface (freeing their 3D polygons). */
 void bl_model_clear_interfaces(bl_model *m);
 
+/* Removes the blocks from number nblocks on (0-based), with the joint
+ * specs and point loads that name them, and the interfaces: a command
+ * that made several blocks and then failed leaves the model as it was. */
+void bl_model_truncate(bl_model *m, int nblocks);
+
 /* Size of the model: the diagonal of the bounding box of all blocks. */
 double bl_model_size(const bl_model *m);
 /* Current direction of the dead load (gravity turned by tilt). */

@@ -97,6 +97,10 @@ local bad = {
   { "wall", function() wall { courses = { { -1, -1 } } } end, "wall", "'courses'", "no block" },
   { "wall", function() wall { courses = { { 1 } }, origin = { 0 / 0, 1 } } end, "wall", "'origin'" },
   { "wall", function() wall { courses = { { 1 } }, density = 0 / 0 } end, "wall", "'density'" },
+  { "wall", function() wall { courses = { { 1, 1 / 0 } } } end, "wall", "course 1 entry 2", "finite" },
+  -- the third block has no area: the two made before it are removed again
+  { "wall", function() wall { courses = { { 1, 1, 1e-300 } }, origin = { 20, 0 } } end, "wall",
+    "zero area" },
   { "arch", function() arch { n = 0, radius = 1, thickness = 0.1 } end, "arch", "'n'" },
   { "arch", function() arch { n = 1, radius = 1, thickness = 0.1 } end, "arch", "'n'", "180 degrees" },
   { "arch", function() arch { n = 3, radius = 1, thickness = 0.1, centre = { 0 } } end, "arch", "'centre'" },
