@@ -14,7 +14,7 @@ void bl_solve_options_default(bl_solve_options *o)
 {
     o->tolerance = 1e-7;
     o->verbose = 0;
-    o->time_limit = 0;
+    o->deadline = 0;
     o->iterations = 0;
     o->threads = 0;
     o->lp = BL_LP_AUTO;
@@ -33,7 +33,7 @@ bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const
     bl_lp_settings_default(&ls);
     ls.engine = o->lp;
     ls.verbose = o->verbose;
-    ls.max_seconds = o->time_limit;
+    ls.deadline = o->deadline;
     ls.max_iterations = o->iterations;
     ls.threads = o->threads;
     ls.early_infeasible = o->early_infeasible;

@@ -14,7 +14,8 @@
 typedef struct bl_solve_options {
     double tolerance;   /* verification tolerance (default 1e-7) */
     int verbose;        /* let the LP engine print */
-    double time_limit;  /* seconds for the LP, 0: none */
+    double deadline;    /* bl_clock() time at which the solve stops (time_limit
+                         * seconds after it began), 0: none */
     int iterations;     /* iteration cap of the LP engine, 0: its default */
     int threads;        /* of the interior point, 0: every core */
     bl_lp_engine_kind lp;

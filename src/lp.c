@@ -36,7 +36,7 @@ void bl_lp_settings_default(bl_lp_settings *s)
     s->engine = BL_LP_AUTO;
     s->verbose = 0;
     s->max_iterations = 0;
-    s->max_seconds = 0;
+    s->deadline = 0;
     s->tolerance = 0; /* the engine's own default */
     s->threads = 0;
     s->early_infeasible = 0;

@@ -58,7 +58,8 @@ typedef struct bl_lp_settings {
     bl_lp_engine_kind engine;
     int verbose;         /* 0: the engine prints nothing */
     int max_iterations;  /* 0: engine default */
-    double max_seconds;  /* 0: no time limit */
+    double deadline;     /* bl_clock() time at which a solve stops, BL_LP_TIME_LIMIT;
+                            0: none */
     double tolerance;    /* simplex: primal and dual feasibility;
                             ipm: relative residuals and gap */
     int threads;         /* ipm: threads, 0: OMP_NUM_THREADS or every core */

@@ -716,7 +716,7 @@ static bl_lp_status solve(void *e)
     weight_sum(p);
     for (int it = 0; status == BL_LP_ITERATION_LIMIT && it < p->set.max_iterations; it++) {
         if (bl_interrupt_pending()) { status = BL_LP_INTERRUPTED; break; }
-        if (p->set.max_seconds > 0 && bl_clock() - t0 > p->set.max_seconds) {
+        if (p->set.deadline > 0 && bl_clock() > p->set.deadline) {
             status = BL_LP_TIME_LIMIT;
             break;
         }

@@ -1146,7 +1146,8 @@ static int model_solve(lua_State *L)
     o.lp_tolerance = number_field(L, 2, "solve", "lp_tolerance", 0, POSITIVE);
     if (o.lp_tolerance > 1e-2)
         fail(L, "solve: field 'lp_tolerance' must be at most 0.01, got %g", o.lp_tolerance);
-    o.time_limit = number_field(L, 2, "solve", "time_limit", 0, POSITIVE);
+    double seconds = number_field(L, 2, "solve", "time_limit", 0, POSITIVE);
+    o.deadline = seconds > 0 ? bl_clock() + seconds : 0;
     double iters = number_field(L, 2, "solve", "iterations", 0, POSITIVE);
     if (iters != floor(iters) || iters > 1e9)
         fail(L, "solve: field 'iterations' must be a positive integer, got %g", iters);

@@ -41,6 +41,8 @@ typedef struct nlp {
     int relax;               /* the a b <= eps rows are present */
     double rho;              /* penalty weight, 0 when off */
     int iterations;          /* counted by the intermediate callback */
+    double deadline;         /* bl_clock() time to stop at (late), 0: none */
+    int late;
 } nlp;
 
 static void nlp_free(nlp *p)
@@ -471,7 +473,8 @@ static Bool intermediate(Index mode, Index iter, Number obj, Number inf_pr, Numb
     (void)alpha_du, (void)alpha_pr, (void)ls, (void)iter;
     nlp *p = ud;
     p->iterations++;
-    return !bl_interrupt_pending();
+    if (p->deadline > 0 && bl_clock() > p->deadline) p->late = 1;
+    return !bl_interrupt_pending() && !p->late;
 }
 
 /* ---- the solve -------------------------------------------------------------- */
@@ -572,8 +575,7 @@ static int run_ipopt(nlp *p, double *v, double *mult, const bl_mpec_options *o,
      * delayed pivots growing MUMPS's workspace again and again, 0.8 s with
      * this; the 2D tests' answers are unchanged (doc/mpec.md) */
     AddIpoptNumOption(ip, "mumps_pivtol", 1e-10);
-    if (o->seq.base.time_limit > 0)
-        AddIpoptNumOption(ip, "max_cpu_time", o->seq.base.time_limit);
+    p->deadline = o->seq.base.deadline;
     SetIntermediateCallback(ip, intermediate);
     double obj;
     double *ml = mult + p->m, *mu = mult + p->m + p->n;
@@ -741,6 +743,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
         if (p.relax)
             for (int k = 0; k < p.npairs; k++) p.ghi[p.nlin + k] = eps;
         if (run_ipopt(&p, v, mult, o, &r)) goto oom;
+        if (p.late) r = Maximum_CpuTime_Exceeded; /* stopped at the solve's deadline */
         if (o->seq.base.verbose && p.relax)
             fprintf(stderr, "mpec: eps %.0e, alpha %.10g, Ipopt %s\n", eps, v[0], ipopt_word(r));
         if (!p.relax || eps <= 1e-10 || (r != Solve_Succeeded && r != Solved_To_Acceptable_Level))

@@ -54,7 +54,7 @@ int bl_napath_applies(const bl_system *s);
  * near, a step that is not finite, a factorization that failed: nothing
  * is set), or -1 with err set (out of memory). */
 int bl_napath_run(const bl_system *s, double target, double near, double deep, int max_iterations,
-                  int report, double *x, double *zl, double *zu, double *y,
+                  double deadline, int report, double *x, double *zl, double *zu, double *y,
                   bl_napath_result *res, bl_error *err);
 
 #endif

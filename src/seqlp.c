@@ -60,6 +60,7 @@ typedef struct path_job {
     bl_system *system;
     double *x, *zl, *zu, *y; /* its last point (napath.h) */
     int report, status, beside; /* report: BL_NAPATH_QUIET, ... */
+    double deadline;            /* the solve's (bl_solve_options) */
     bl_napath_result res;
     bl_error err;
     pthread_t thread;
@@ -870,7 +871,7 @@ static void *run_path(void *arg)
 {
     path_job *j = arg;
     j->status = bl_napath_run(j->system, BL_SEQLP_PATH_PRODUCTS, BL_SEQLP_PATH_NEAR,
-                              BL_SEQLP_PATH_DEEP, BL_SEQLP_PATH_STEPS, j->report, j->x, j->zl, j->zu, j->y, &j->res,
+                              BL_SEQLP_PATH_DEEP, BL_SEQLP_PATH_STEPS, j->deadline, j->report, j->x, j->zl, j->zu, j->y, &j->res,
                               &j->err);
     return NULL;
 }
@@ -917,6 +918,7 @@ static int path_start(bl_model *m, const bl_seqlp_options *o, path_job *j, bl_er
         path_free(j);
         return 0;
     }
+    j->deadline = o->base.deadline;
     j->report = o->base.verbose ? BL_NAPATH_VERBOSE
                 : o->progress     ? BL_NAPATH_PROGRESS
                                   : BL_NAPATH_QUIET;

@@ -348,4 +348,28 @@ wall { courses = require("walls").running_bond(20), unit = { 0.4, 0.175 } }
 r = solve { flow = "associative", lp = "simplex", time_limit = 1e-3 }
 T.eq(r.status, "time limit", "simplex, 0.001 s on 420 blocks: status time limit")
 T.eq(solve { flow = "associative", lp = "simplex" }.status, "optimal", "simplex, no time limit: optimal")
+-- The time limit holds for the whole solve: a running-bond wall of 60
+-- courses (3,630 blocks), whose sequence takes tens of seconds, stopped
+-- after 1 s.  Its path, run beside the associative LP, did not look at the
+-- limit and the call took 16 s.  The margin of 5 s is for a loaded machine.
+do
+  local courses = {}
+  for c = 1, 60 do
+    local row = {}
+    if c % 2 == 0 then row[1] = 0.5 end
+    for _ = 1, 59 do row[#row + 1] = 1 end
+    row[#row + 1] = c % 2 == 0 and 0.5 or 1
+    courses[c] = row
+  end
+  model { mu = 0.65 }
+  wall { courses = courses }
+  for _, method in ipairs { "seqlp", "mpec" } do
+    local t = blocklim.clock()
+    r = solve { time_limit = 1, method = method, progress = false }
+    local took = blocklim.clock() - t
+    T.ok(r.status == "time limit" and took < 6, method .. ": time_limit = 1 on 3,630 blocks: stopped within 6 s",
+         ("%s after %.1f s"):format(r.status, took))
+  end
+end
+
 T.done()
