@@ -195,8 +195,9 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
         if (!lp) break;
         t2 = bl_clock();
         st = bl_lp_solve(lp);
-        if ((st == BL_LP_FAILED || st == BL_LP_ITERATION_LIMIT) &&
-            strcmp(bl_lp_engine(lp), "ipm") == 0) {
+        /* an LP stopped at the user's own iteration cap is not tried again */
+        int retry = st == BL_LP_FAILED || (st == BL_LP_ITERATION_LIMIT && o->iterations == 0);
+        if (retry && strcmp(bl_lp_engine(lp), "ipm") == 0) {
             /* Blocks confined between supports can carry any compression,
              * and the interior point does not converge on the unbounded
              * optimal face (doc/seqlp.md 13).  Every force column capped
@@ -211,8 +212,9 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
             lp = bl_solve_lp(sys, sys->lo, sys->hi, NULL, o, err);
             if (!lp) break;
             st = bl_lp_solve(lp);
+            retry = st == BL_LP_FAILED || (st == BL_LP_ITERATION_LIMIT && o->iterations == 0);
         }
-        if ((st == BL_LP_FAILED || st == BL_LP_ITERATION_LIMIT) && o->lp == BL_LP_AUTO &&
+        if (retry && o->lp == BL_LP_AUTO &&
             strcmp(bl_lp_engine(lp), "ipm") == 0 && sys->nrows <= BL_SIMPLEX_ROWS) {
             /* Round-off can stop the interior point short of the answer
              * (an arch of 241 voussoirs at mu = 100 on the unweighted

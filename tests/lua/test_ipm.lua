@@ -116,4 +116,14 @@ end
 local first, same = fingerprint(solve { flow = "associative", lp = "ipm" }), true
 for _ = 1, 4 do same = same and fingerprint(solve { flow = "associative", lp = "ipm" }) == first end
 T.ok(same, "random wall 6, interior point, solved 5 times: the same alpha and forces to the bit")
+-- The user's iteration cap is the most the LP takes: an LP stopped there
+-- is not tried again (it was, with every force capped, which doubled it).
+model { mu = 0.65 }
+wall { courses = walls.W1, unit = { 0.4, 0.175 } }
+for _, n in ipairs { 1, 3 } do
+  r = solve { flow = "associative", lp = "ipm", iterations = n }
+  T.ok(r.status == "iteration limit" and r.iterations <= n,
+       ("W1, interior point, iterations = %d: at most %d iterations"):format(n, n),
+       ("%s after %d"):format(r.status, r.iterations))
+end
 T.done()
