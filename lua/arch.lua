@@ -30,9 +30,9 @@ return function(M)
           :format(tostring(k)))
       end
     end
-    local n = t.n
-    if math.type(n) ~= "integer" or n < 1 then
-      fail("field 'n' must be a positive integer (the number of voussoirs), got " .. tostring(n))
+    local n = math.type(t.n) and math.tointeger(t.n) -- 10/2 as well as 5
+    if not n or n < 1 then
+      fail("field 'n' must be a positive integer (the number of voussoirs), got " .. tostring(t.n))
     end
     local angle = t.angle or 180
     if type(angle) ~= "number" or not (angle > 0 and angle <= 360) then
@@ -72,8 +72,9 @@ return function(M)
     local length, segments = t.length, t.segments or 1
     if solid then
       length = positive(t, "length")
-      if math.type(segments) ~= "integer" or segments < 1 then
-        fail("field 'segments' must be a positive integer, got " .. tostring(segments))
+      segments = math.type(segments) and math.tointeger(segments)
+      if not segments or segments < 1 then
+        fail("field 'segments' must be a positive integer, got " .. tostring(t.segments))
       end
     elseif t.length ~= nil or t.segments ~= nil then
       fail("fields 'length' and 'segments' are for barrel vaults in 3D models (model{ dim = 3 })")

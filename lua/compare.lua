@@ -62,6 +62,9 @@ return function(M)
   function M.compare(t)
     t = t or {}
     if type(t) ~= "table" then fail("expects a table of named fields, got " .. type(t)) end
+    if t.method ~= nil then
+      fail("unknown field 'method' (did you mean 'methods', a list such as { \"assoc\", \"seqlp\" }?)")
+    end
     local methods = t.methods or { "assoc", "seqlp", "mpec" }
     if type(methods) ~= "table" or #methods == 0 then
       fail("field 'methods' must be a non-empty list of method names or solve{} tables")

@@ -33,6 +33,8 @@
 --   (1 = the lowest), cutting the bricks at its jambs; the course above
 --   spans it as it is.  On a fixed base slab.  Returns the block numbers
 --   and the base.
+local report = require "blocklim.report"
+
 return function(M, fields)
   local fail, number_list, check = fields.fail, fields.number_list, fields.check
   local positive_integer = fields.positive_integer
@@ -40,10 +42,11 @@ return function(M, fields)
   function M.facade(t)
     check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true })
     local function count(k)
-      if math.type(t[k]) ~= "integer" or t[k] < 1 then
+      local v = math.type(t[k]) and math.tointeger(t[k])
+      if not v or v < 1 then
         fail("facade", ("field '%s' must be a positive integer, got %s"):format(k, tostring(t[k])))
       end
-      return t[k]
+      return v
     end
     local n, m, courses = count("length"), count("returns"), count("courses")
     if n < 2 then fail("facade", "field 'length' must be at least 2 blocks") end
@@ -68,17 +71,19 @@ return function(M, fields)
       end
     end
     local base = M.box { size = { W + 2 * th, D + 2 * th, H }, at = { W / 2, D / 2, -H }, support = true }
-    return blocks, base
+    return report.blocks(blocks), base
   end
 
   function M.corner(t)
     check("corner", t, { lengths = true, courses = true, unit = true, density = true })
     local n = number_list("corner", t, "lengths", 2, true)
     for i = 1, 2 do
-      if math.type(n[i]) ~= "integer" or n[i] < 2 then
+      local v = math.tointeger(n[i])
+      if not v or v < 2 then
         fail("corner", ("field 'lengths' entry %d must be an integer of at least 2 blocks, got %s")
           :format(i, tostring(n[i])))
       end
+      n[i] = v
     end
     local courses = positive_integer("corner", t, "courses")
     local u = number_list("corner", t, "unit", 2, true)
@@ -99,7 +104,7 @@ return function(M, fields)
     end
     local X, Y = n[1] * L, n[2] * L + th
     local base = M.box { size = { X + 2 * th, Y + 2 * th, H }, at = { X / 2, Y / 2, -H }, support = true }
-    return blocks, base
+    return report.blocks(blocks), base
   end
 
   function M.pier(t)
@@ -124,7 +129,7 @@ return function(M, fields)
       end
     end
     local base = M.box { size = { 2 * a, 2 * b, H }, at = { 0, 0, -H }, support = true }
-    return blocks, base
+    return report.blocks(blocks), base
   end
 
   function M.bond(t)
@@ -213,6 +218,6 @@ return function(M, fields)
     end
     local base = M.box { size = { (n + 1) * L, (k + 1) * L, H }, at = { n * L / 2, k * L / 2, -H },
                          support = true }
-    return blocks, base
+    return report.blocks(blocks), base
   end
 end

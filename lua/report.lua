@@ -183,7 +183,7 @@ local function picture(fmt)
           error(("%s: unknown field '%s' (fields: width, view)"):format(fmt, k), 2)
         end
       end
-      width = opts.width
+      width = opts.width ~= nil and math.type(opts.width) and math.tointeger(opts.width) or opts.width
       if width ~= nil and (math.type(width) ~= "integer" or width < 100 or width > 20000) then
         error(fmt .. ": field 'width' must be an integer from 100 to 20000", 2)
       end

@@ -12,6 +12,8 @@
 --   density }: a hemispherical dome of m rings of k voussoirs each (the
 --   top ring's voussoirs meet at the crown), radial joints, on a fixed base
 --   slab under z = centre z.  Returns the voussoir numbers and the base.
+local report = require "blocklim.report"
+
 return function(M)
   -- level: 3 blames the caller of box or extrude when they call fail
   -- themselves; their helpers pass 4
@@ -42,12 +44,14 @@ return function(M)
     if m:dim() ~= 3 then fail(fn, "makes 3D blocks; start a model with model{ dim = 3 }", 4) end
   end
 
+  -- an integer, or a float of integral value (10 / 2)
   local function positive_integer(fn, t, k, min)
-    if math.type(t[k]) ~= "integer" or t[k] < (min or 1) then
+    local v = math.type(t[k]) and math.tointeger(t[k])
+    if not v or v < (min or 1) then
       fail(fn, ("field '%s' must be an integer of at least %d, got %s"):format(k, min or 1,
            tostring(t[k])), 4)
     end
-    return t[k]
+    return v
   end
 
   -- A prism: the polygon's points at `from` (1..n) and at `to` (n+1..2n).
@@ -85,11 +89,12 @@ return function(M)
       return t[k]
     end
     local function count(k, least)
-      if math.type(t[k]) ~= "integer" or t[k] < least then
+      local v = math.type(t[k]) and math.tointeger(t[k])
+      if not v or v < least then
         fail("dome", ("field '%s' must be an integer of at least %d, got %s"):format(k, least,
              tostring(t[k])))
       end
-      return t[k]
+      return v
     end
     local R, th = positive("radius"), positive("thickness")
     if th >= 2 * R then fail("dome", "field 'thickness' must be less than the diameter") end
@@ -119,7 +124,7 @@ return function(M)
     end
     local base = M.box { size = { 2 * ro + 2 * th, 2 * ro + 2 * th, th }, at = { c[1], c[2], c[3] - th },
                          support = true }
-    return blocks, base
+    return report.blocks(blocks), base
   end
 
   function M.extrude(t)

@@ -42,4 +42,9 @@ local ref = solve { flow = "associative", lp = "simplex" }
 r = solve { progress = false }
 T.ok(r.status == "optimal" and r.verified, "241 voussoirs, mu = 100: optimal and verified", r.status)
 T.near(r.alpha, ref.alpha, 1e-7, "241 voussoirs, mu = 100: alpha = the simplex's associative alpha")
+-- A count computed as a float of integral value is a count: 10 / 2
+-- voussoirs make five (it was refused as "not an integer, got 5.0").
+model {}
+local made = arch { n = 10 / 2, span = 4, thickness = 0.5 }
+T.eq(#made, 5, "arch{ n = 10 / 2 }: 5 voussoirs")
 T.done()

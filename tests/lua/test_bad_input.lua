@@ -89,6 +89,7 @@ local bad = {
   { "solve", function() solve { nearest = 2.5 } end, "solve", "'nearest'", "integer" },
   { "solve", function() solve { flow = "associative", nearest = 1 } end, "solve", "'nearest'",
     "nonassociative" },
+  { "compare", function() compare { method = "assoc" } end, "compare", "unknown field 'method'", "'methods'" },
   { "wall", function() wall { courses = { { 1, "a" } } } end, "wall", "'courses'" },
   { "wall", function() wall { courses = { { 1 } }, unit = { 0.4 } } end, "wall", "'unit'" },
   { "wall", function() wall { courses = { { 1 } }, unit = { 0.4, 0.1, 9 } } end, "wall", "'unit'" },
