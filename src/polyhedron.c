@@ -1,4 +1,5 @@
 #include "polyhedron.h"
+#include "geometry.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -264,7 +265,36 @@ int bl_polyhedron_check(bl_polyhedron *p, double tol, int id, bl_error *err)
                                     "plane; tolerance %.3g)",
                                     id, k + 1, p->fi[a + i] + 1, fabs(d), tol);
         }
+        /* simple: in its plane no two edges cross (a crossed face has no
+         * inside; its signed area gave a wrong volume and contact) */
+        bl_vec3 u = fabs(n.x) < 0.9 ? bl_v3(1, 0, 0) : bl_v3(0, 1, 0);
+        u = bl_v3_cross(n, u);
+        u = bl_v3_scale(u, 1.0 / bl_v3_norm(u));
+        bl_vec3 w = bl_v3_cross(n, u);
+        bl_vec2 *flat = malloc((size_t)m * sizeof *flat);
+        if (!flat) return bl_error_set(err, "block %d: out of memory", id);
+        for (int i = 0; i < m; i++) {
+            bl_vec3 d = bl_v3_sub(p->v[p->fi[a + i]], o);
+            flat[i] = bl_v2(bl_v3_dot(d, u), bl_v3_dot(d, w));
+        }
+        int ei, ej, crossed = bl_polygon_self_intersection(flat, m, tol, &ei, &ej);
+        free(flat);
+        if (crossed)
+            return bl_error_set(err, "block %d: face %d crosses itself (its edges %d and %d)", id,
+                                k + 1, ei + 1, ej + 1);
     }
+    /* every vertex on some face: an unused one is a slip of the pen, and it
+     * stretched the block's bounding box (and with it the model's size and
+     * tolerances) */
+    char *used = calloc((size_t)p->nv + 1, 1);
+    if (!used) return bl_error_set(err, "block %d: out of memory", id);
+    for (int t = 0; t < p->fs[p->nf]; t++) used[p->fi[t]] = 1;
+    for (int i = 0; i < p->nv; i++)
+        if (!used[i]) {
+            free(used);
+            return bl_error_set(err, "block %d: vertex %d is on no face", id, i + 1);
+        }
+    free(used);
 
     /* edges: each shared by exactly two faces */
     int ne = p->fs[p->nf];

@@ -89,6 +89,17 @@ T.raises(function() block { vertices = cube, faces = { { 1, 2, 3 }, { 1, 2, 9 } 
          "a face naming a missing vertex", "block", "face 2", "vertex 9")
 T.raises(function() block { vertices = cube, faces = faces, thickness = 1 } end,
          "thickness is refused in 3D", "block", "'thickness'")
+-- a face whose edges cross (an L footprint with a crossed vertex order:
+-- its signed area gave volume 1 for a prism whose contact was 4), and a
+-- vertex on no face (it stretched the block's box and switched off the
+-- overlap test)
+T.raises(function() extrude { polygon = { { 0, 0 }, { 2, 0 }, { 2, 2 }, { 1, -1 }, { 0, 2 } }, to = 1 } end,
+         "a face that crosses itself", "block 7", "crosses itself", "edges 1 and 4")
+local extra = {}
+for i, p in ipairs(cube) do extra[i] = p end
+extra[9] = { 9, 9, 9 }
+T.raises(function() block { vertices = extra, faces = faces } end,
+         "a vertex on no face", "block 7", "vertex 9", "on no face")
 T.eq(count(), 6, "after the errors the model has the blocks it had")
 
 -- Interface detection: coplanar opposite faces and their overlap.
