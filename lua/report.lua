@@ -192,9 +192,10 @@ local function picture(fmt)
                       top = { 0, 90 } }
       local v = opts.view
       if type(v) == "string" then v = views[v] end
-      if opts.view ~= nil and (type(v) ~= "table" or type(v[1]) ~= "number" or type(v[2]) ~= "number"
+      local function finite(x) return type(x) == "number" and x == x and math.abs(x) < math.huge end
+      if opts.view ~= nil and (type(v) ~= "table" or #v ~= 2 or not finite(v[1]) or not finite(v[2])
                                or math.abs(v[2]) > 90) then
-        error(fmt .. ": field 'view' must be {azimuth, elevation} in degrees (elevation within " ..
+        error(fmt .. ": field 'view' must be {azimuth, elevation}, two finite numbers of degrees (elevation within " ..
               "+-90) or one of \"front\", \"back\", \"left\", \"right\", \"top\"", 2)
       end
       if v then az, el = v[1], v[2] end

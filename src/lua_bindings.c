@@ -394,7 +394,9 @@ static int block_3d(lua_State *L, bl_model *m)
     if (hull) {
         if (bl_convex_hull(v, nv, m->nblocks + 1, &solid, &err)) return fail(L, "%s", err.msg);
     } else {
-        field(L, 2, "faces");
+        if (!field(L, 2, "faces"))
+            return fail(L, "block: field 'faces' is missing: a 3D block of 'vertices' needs its "
+                           "faces (lists of vertex numbers); 'points' alone make a convex hull");
         if (!lua_istable(L, -1))
             return fail(L, "block: field 'faces' must be a list of faces (lists of vertex "
                            "numbers), got %s", luaL_typename(L, -1));

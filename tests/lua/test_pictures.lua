@@ -51,6 +51,8 @@ text = f and f:read("a") or ""
 if f then f:close() end
 T.ok(text:find("</svg>", 1, true), "3D svg from the top: a complete SVG document")
 T.raises(function() r3:png(png, { view = { 0, 120 } }) end, "3D: a view above the zenith is refused", "view")
+T.raises(function() r3:png(png, { view = { 0 / 0, 10 } }) end, "3D: a view of NaN degrees is refused", "view", "finite")
+T.raises(function() r3:png(png, { view = { 1, 2, 3 } }) end, "3D: a view of three numbers is refused", "view")
 os.remove(svg); os.remove(png)
 
 -- 3D joint markers: a box 0.5 x 1 x 1 on a slab loaded along x rocks when

@@ -98,6 +98,7 @@ T.raises(function() extrude { polygon = { { 0, 0 }, { 2, 0 }, { 2, 2 }, { 1, -1 
 local extra = {}
 for i, p in ipairs(cube) do extra[i] = p end
 extra[9] = { 9, 9, 9 }
+T.raises(function() block { vertices = cube } end, "vertices without faces", "'faces'", "missing")
 T.raises(function() block { vertices = extra, faces = faces } end,
          "a vertex on no face", "block 7", "vertex 9", "on no face")
 T.eq(count(), 6, "after the errors the model has the blocks it had")
