@@ -132,11 +132,21 @@ return function(M)
     return ("%.1e"):format(x)
   end
 
+  -- the largest of the residuals of the flow rule beyond complementarity:
+  -- the work balance, and the non-associative flow and dilatancy
+  local function flow_rule(e)
+    local worst
+    for _, k in ipairs { "work", "flow", "dilatancy" } do
+      if e[k] ~= nil then worst = math.max(worst or e[k], e[k]) end
+    end
+    return worst
+  end
+
   function Comparison.__tostring(c)
     local out = {}
     local head = ("%-22s %-6s %-10s %8s %8s %5s %8s %8s %8s %8s %-6s %7s %7s")
       :format("method", "flow", "alpha", "time s", "iter.", "LPs", "equil.", "yield", "compl.",
-              "dilat.", "verif.", "mech.", "states")
+              "flow r.", "verif.", "mech.", "states")
     out[1] = head
     out[2] = ("-"):rep(#head)
     for _, row in ipairs(c.rows) do
@@ -146,10 +156,11 @@ return function(M)
         row.label:sub(1, 22), r.flow == "associative" and "assoc" or "non-a",
         answered and ("%.6f"):format(r.alpha) or r.status:sub(1, 10), r.timings.total,
         r.iterations, r.method == "mpec" and "-" or tostring(r.lps or 1), g(e.equilibrium), g(e.yield), g(e.complementarity),
-        g(e.dilatancy), tostring(r.verified), row.agreement and ("%.4f"):format(row.agreement) or "-",
+        g(flow_rule(e)), tostring(r.verified), row.agreement and ("%.4f"):format(row.agreement) or "-",
         row.differing and tostring(row.differing) or "-")
     end
-    out[#out + 1] = ("mech.: u . u1 / (|u| |u1|) against the first row's mechanism; "
+    out[#out + 1] = ("flow r.: the largest of the work, flow and dilatancy residuals; "
+                     .. "mech.: u . u1 / (|u| |u1|) against the first row's mechanism; "
                      .. "states: interfaces whose state differs from the first row's")
     return table.concat(out, "\n")
   end

@@ -211,6 +211,9 @@ static bl_model *check_model(lua_State *L, int idx)
         lua_Debug ar;
         const char *name = lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name
                                ? ar.name : "model method";
+        if (strcmp(name, "model method") == 0) /* its name is not known (m.load{...}) */
+            fail(L, "model method: expects a model, got %s; call model methods with a colon, "
+                    "as in m:block_info(1)", luaL_typename(L, idx));
         fail(L, "%s: expects a model, got %s; call it with a colon: m:%s{...}", name,
              luaL_typename(L, idx), name);
     }
@@ -225,6 +228,7 @@ static int block_index(lua_State *L, bl_model *m, int idx, const char *fn, const
     if (!whole && lua_type(L, idx) == LUA_TNUMBER)
         fail(L, "%s: %s must be a whole block number, got %g", fn, what, lua_tonumber(L, idx));
     if (!whole) fail(L, "%s: %s must be a block number, got %s", fn, what, luaL_typename(L, idx));
+    if (m->nblocks == 0) fail(L, "%s: %s is block %d, but the model has no blocks yet", fn, what, (int)b);
     if (b < 1 || b > m->nblocks)
         fail(L, "%s: %s is block %d, but the model has blocks 1 to %d", fn, what, (int)b,
                    m->nblocks);
@@ -790,7 +794,11 @@ static int model_interface_info(lua_State *L)
     bl_model *m = check_model(L, 1);
     bl_error err;
     if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
-    lua_Integer k = luaL_checkinteger(L, 2);
+    int whole;
+    lua_Integer k = lua_tointegerx(L, 2, &whole);
+    if (!whole)
+        return fail(L, "interface_info: argument 1 must be an interface number, got %s",
+                    lua_type(L, 2) == LUA_TNUMBER ? "a fraction" : luaL_typename(L, 2));
     if (k < 1 || k > m->ninterfaces)
         return fail(L, "interface_info: argument 1 must be an interface number from 1 to %d, "
                        "got %lld", m->ninterfaces, (long long)k);
