@@ -54,6 +54,10 @@ function Result.__tostring(r)
     if r.path and r.path.taken then
       say("  the first start from the path of the non-associative problem: %d Newton steps,", r.path.steps)
       say("  alpha %.6g, products %s, %.3f s", r.path.alpha, g(r.path.products), r.path.time)
+    elseif r.path and r.path.stopped then
+      say("  the path of the non-associative problem was stopped (Ctrl-C or the time limit) after")
+      say("  %d Newton steps (products %s, %.3f s), before any start", r.path.steps, g(r.path.products),
+          r.path.time)
     elseif r.path then
       say("  the path of the non-associative problem stopped short: products %s after %d Newton",
           g(r.path.products), r.path.steps)

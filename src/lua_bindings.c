@@ -897,6 +897,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         if (s->path_steps > 0) {
             lua_createtable(L, 0, 5);
             set_boolean(L, "taken", s->path_taken);
+            set_boolean(L, "stopped", s->path_stopped);
             set_integer(L, "steps", s->path_steps);
             set_number(L, "alpha", s->path_alpha);
             set_number(L, "products", s->path_products);

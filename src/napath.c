@@ -482,7 +482,10 @@ int bl_napath_run(const bl_system *s, double target, double near, double deep, i
     double bn = 1.0 + amax(p.b, m), best = INFINITY;
     int best_it = 0;
     for (int it = 0; it < max_iterations; it++) {
-        if (bl_interrupt_pending() || (deadline > 0 && bl_clock() > deadline)) goto done;
+        if (bl_interrupt_pending() || (deadline > 0 && bl_clock() > deadline)) {
+            res->stopped = 1;
+            goto done;
+        }
         /* residuals */
         products(&p, x.n, x.u, r.rp);
         for (int i = 0; i < m; i++) r.rp[i] = p.b[i] - r.rp[i] - p.g[i] * x.a;

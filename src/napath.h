@@ -25,6 +25,7 @@ typedef struct bl_napath_result {
     double complementarity; /* sum of the products over 1 + |alpha| */
     double mu;             /* their mean */
     int deep;              /* the point went on past target to deep */
+    int stopped;           /* Ctrl-C or the deadline stopped it */
     double seconds;
 } bl_napath_result;
 

@@ -946,6 +946,7 @@ static int path_answer(path_job *j, run *r, bl_solution *s, bl_error *err)
     s->path_alpha = j->res.alpha;
     s->path_products = j->res.complementarity;
     s->path_seconds = j->res.seconds;
+    s->path_stopped = j->res.stopped;
     if (j->status != 0 || f->ncols != r->fixed->ncols || f->nrows != r->fixed->nrows) return 0;
     for (int p = 0; p < f->npoints; p++) r->n[p] = 0.0;
     for (int k = 0; k < f->nforce; k++)

@@ -126,6 +126,7 @@ typedef struct bl_solution {
                                 its Newton steps, 0 when none ran */
     int path_taken;          /* whether it started the sequence (else start 0
                                 began from the associative forces) */
+    int path_stopped;        /* Ctrl-C or the time limit stopped it */
     double path_alpha, path_products, path_seconds;
     /* the direct solve (method "mpec") */
     double alpha_start;      /* alpha of the point it started from (NAN: cold) */
