@@ -92,7 +92,7 @@ int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max)
  * LIGHT_LOAD over them, at most LIGHT_SCALE_MAX: an LP engine's residuals
  * are relative to the largest load, and a block 10^-5 as heavy as W0 was
  * left unbalanced by its own weight within them (the interior point's
- * "numerical trouble" or a wrong alpha; doc/theory.md 2.3).  Its dual
+ * "numerical trouble" or a wrong alpha; doc/theory.md 3, scaling).  Its dual
  * rows, the block's velocity, are divided by the same factor
  * (bl_system_velocity undoes it).  A model without such a block is
  * assembled as before, row_scale NULL. */
