@@ -353,16 +353,8 @@ T.eq(solve { flow = "associative", lp = "simplex" }.status, "optimal", "simplex,
 -- after 1 s.  Its path, run beside the associative LP, did not look at the
 -- limit and the call took 16 s.  The margin of 5 s is for a loaded machine.
 do
-  local courses = {}
-  for c = 1, 60 do
-    local row = {}
-    if c % 2 == 0 then row[1] = 0.5 end
-    for _ = 1, 59 do row[#row + 1] = 1 end
-    row[#row + 1] = c % 2 == 0 and 0.5 or 1
-    courses[c] = row
-  end
   model { mu = 0.65 }
-  wall { courses = courses }
+  wall { courses = require("walls").running_bond(60) }
   for _, method in ipairs { "seqlp", "mpec" } do
     local t = blocklim.clock()
     r = solve { time_limit = 1, method = method, progress = false }
