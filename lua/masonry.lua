@@ -41,14 +41,8 @@ return function(M, fields)
 
   function M.facade(t)
     check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true })
-    local function count(k)
-      local v = math.type(t[k]) and math.tointeger(t[k])
-      if not v or v < 1 then
-        fail("facade", ("field '%s' must be a positive integer, got %s"):format(k, tostring(t[k])))
-      end
-      return v
-    end
-    local n, m, courses = count("length"), count("returns"), count("courses")
+    local n, m = positive_integer("facade", t, "length"), positive_integer("facade", t, "returns")
+    local courses = positive_integer("facade", t, "courses")
     if n < 2 then fail("facade", "field 'length' must be at least 2 blocks") end
     local u = number_list("facade", t, "unit", 2, true)
     local L, H, th = u[1], u[2], u[1] / 2
