@@ -452,8 +452,8 @@ static int export_point(const bl_system *s, const point *x, int m, double *xo, d
 }
 
 int bl_napath_run(const bl_system *s, double target, double near, double deep, int max_iterations,
-                  double deadline, int report, double *xo, double *zl, double *zu, double *yo,
-                  bl_napath_result *res, bl_error *err)
+                  double deadline, const atomic_int *cancel, int report, double *xo, double *zl,
+                  double *zu, double *yo, bl_napath_result *res, bl_error *err)
 {
     double t0 = bl_clock();
     memset(res, 0, sizeof *res);
@@ -482,7 +482,8 @@ int bl_napath_run(const bl_system *s, double target, double near, double deep, i
     double bn = 1.0 + amax(p.b, m), best = INFINITY;
     int best_it = 0;
     for (int it = 0; it < max_iterations; it++) {
-        if (bl_interrupt_pending() || (deadline > 0 && bl_clock() > deadline)) {
+        if (bl_interrupt_pending() || (deadline > 0 && bl_clock() > deadline) ||
+            (cancel && atomic_load(cancel))) {
             res->stopped = 1;
             goto done;
         }

@@ -16,6 +16,8 @@
 #ifndef BL_NAPATH_H
 #define BL_NAPATH_H
 
+#include <stdatomic.h>
+
 #include "assemble.h"
 #include "error.h"
 
@@ -53,9 +55,11 @@ int bl_napath_applies(const bl_system *s);
  * these normal forces, near its own path (lp.h, bl_lp_warm).  Returns 0,
  * 1 when the path did not get there (stalled or at the cap farther than
  * near, a step that is not finite, a factorization that failed: nothing
- * is set), or -1 with err set (out of memory). */
+ * is set), or -1 with err set (out of memory).  Ctrl-C, the deadline (0:
+ * none) and *cancel turning non-zero (cancel may be NULL) stop it between
+ * steps (res->stopped). */
 int bl_napath_run(const bl_system *s, double target, double near, double deep, int max_iterations,
-                  double deadline, int report, double *x, double *zl, double *zu, double *y,
-                  bl_napath_result *res, bl_error *err);
+                  double deadline, const atomic_int *cancel, int report, double *x, double *zl,
+                  double *zu, double *y, bl_napath_result *res, bl_error *err);
 
 #endif

@@ -61,6 +61,7 @@ typedef struct path_job {
     double *x, *zl, *zu, *y; /* its last point (napath.h) */
     int report, status, beside; /* report: BL_NAPATH_QUIET, ... */
     double deadline;            /* the solve's (bl_solve_options) */
+    atomic_int cancel;          /* set when its answer is no longer wanted */
     bl_napath_result res;
     bl_error err;
     pthread_t thread;
@@ -871,14 +872,18 @@ static void *run_path(void *arg)
 {
     path_job *j = arg;
     j->status = bl_napath_run(j->system, BL_SEQLP_PATH_PRODUCTS, BL_SEQLP_PATH_NEAR,
-                              BL_SEQLP_PATH_DEEP, BL_SEQLP_PATH_STEPS, j->deadline, j->report, j->x, j->zl, j->zu, j->y, &j->res,
-                              &j->err);
+                              BL_SEQLP_PATH_DEEP, BL_SEQLP_PATH_STEPS, j->deadline, &j->cancel,
+                              j->report, j->x, j->zl, j->zu, j->y, &j->res, &j->err);
     return NULL;
 }
 
+/* Stops the path (its answer is no longer wanted) and frees it. */
 static void path_free(path_job *j)
 {
-    if (j->beside) pthread_join(j->thread, NULL);
+    if (j->beside) {
+        atomic_store(&j->cancel, 1);
+        pthread_join(j->thread, NULL);
+    }
     j->beside = 0;
     bl_system_free(j->system);
     free(j->x);

@@ -17,7 +17,11 @@
  * loads).
  *
  * Past its target towards a deeper level (deep_or_the_targets_point): the
- * deeper point when it gets there, else the target's, unchanged. */
+ * deeper point when it gets there, else the target's, unchanged.
+ *
+ * Cancelled (stopped_when_cancelled): a path whose cancel flag is set takes
+ * no step and reports that it was stopped; with the flag clear the same
+ * call reaches the closed form. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -61,7 +65,7 @@ static double path_alpha(const bl_system *s, double *x_out)
     double *x = calloc((size_t)s->ncols, sizeof *x), *zl = calloc((size_t)s->ncols, sizeof *zl);
     double *zu = calloc((size_t)s->ncols, sizeof *zu), *y = calloc((size_t)s->nrows, sizeof *y);
     bl_napath_result res;
-    assert_int_equal(bl_napath_run(s, 1e-10, 1e-10, 1e-10, 100, 0, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-10, 1e-10, 1e-10, 100, 0, NULL, 0, x, zl, zu, y, &res, NULL), 0);
     assert_true(res.complementarity <= 1e-10);
     if (x_out) memcpy(x_out, x, (size_t)s->ncols * sizeof *x);
     free(x);
@@ -105,7 +109,7 @@ static void warm_from_the_path(void **state)
     double *y = calloc((size_t)s->nrows, sizeof *y), *n = calloc((size_t)s->npoints, sizeof *n);
     double *lo = calloc(nc, sizeof *lo), *hi = calloc(nc, sizeof *hi);
     bl_napath_result res;
-    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-3, 100, 0, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-3, 100, 0, NULL, 0, x, zl, zu, y, &res, NULL), 0);
     for (size_t k = 0; k < (size_t)s->nforce; k++)
         if (s->col_kind[k] == BL_COL_NORMAL) n[s->col_point[k]] = x[k];
     bl_system_fixed_bounds(s, n, s->cohesion, lo, hi);
@@ -163,11 +167,11 @@ static void cut_short_taken_when_near(void **state)
     double *x = calloc(nc, sizeof *x), *zl = calloc(nc, sizeof *zl), *zu = calloc(nc, sizeof *zu);
     double *y = calloc((size_t)s->nrows, sizeof *y), *r = calloc((size_t)s->nrows, sizeof *r);
     bl_napath_result res;
-    assert_int_equal(bl_napath_run(s, 1e-12, 1e-12, 1e-12, 12, 0, 0, x, zl, zu, y, &res, NULL), 1);
+    assert_int_equal(bl_napath_run(s, 1e-12, 1e-12, 1e-12, 12, 0, NULL, 0, x, zl, zu, y, &res, NULL), 1);
     double reached = res.complementarity;
     assert_true(reached > 1e-12);
-    assert_int_equal(bl_napath_run(s, 1e-12, 0.5 * reached, 1e-12, 12, 0, 0, x, zl, zu, y, &res, NULL), 1);
-    assert_int_equal(bl_napath_run(s, 1e-12, 2.0 * reached, 1e-12, 12, 0, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-12, 0.5 * reached, 1e-12, 12, 0, NULL, 0, x, zl, zu, y, &res, NULL), 1);
+    assert_int_equal(bl_napath_run(s, 1e-12, 2.0 * reached, 1e-12, 12, 0, NULL, 0, x, zl, zu, y, &res, NULL), 0);
     double own = products_of(s, x, zl, zu), bmax = 0.0, rmax = 0.0;
     for (int i = 0; i < s->nrows; i++) {
         r[i] = s->rhs[i];
@@ -204,10 +208,10 @@ static void deep_or_the_targets_point(void **state)
     double *y = calloc(nr, sizeof *y), *x0 = calloc(nc, sizeof *x0), *y0 = calloc(nr, sizeof *y0);
     double *r = calloc(nr, sizeof *r);
     bl_napath_result at, res;
-    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-3, 100, 0, 0, x0, zl, zu, y0, &at, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-3, 100, 0, NULL, 0, x0, zl, zu, y0, &at, NULL), 0);
     assert_int_equal(at.deep, 0);
 
-    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-8, 100, 0, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-8, 100, 0, NULL, 0, x, zl, zu, y, &res, NULL), 0);
     double own = products_of(s, x, zl, zu), bmax = 0.0, rmax = 0.0;
     for (size_t i = 0; i < nr; i++) {
         r[i] = s->rhs[i];
@@ -225,7 +229,7 @@ static void deep_or_the_targets_point(void **state)
     assert_true(fabs(own - res.complementarity) <= 1e-9 * res.complementarity);
     assert_true(rmax <= 1e-6 * bmax);
 
-    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-30, 100, 0, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-30, 100, 0, NULL, 0, x, zl, zu, y, &res, NULL), 0);
     print_message("# towards 1e-30: %d steps, the point at %d returned\n", res.iterations,
                   at.iterations);
     assert_int_equal(res.deep, 0);
@@ -243,6 +247,28 @@ static void deep_or_the_targets_point(void **state)
     bl_system_free(s);
 }
 
+static void stopped_when_cancelled(void **state)
+{
+    (void)state;
+    bl_system *s = column(1, 0.4, 0.175, 0.5);
+    double *x = calloc((size_t)s->ncols, sizeof *x), *zl = calloc((size_t)s->ncols, sizeof *zl);
+    double *zu = calloc((size_t)s->ncols, sizeof *zu), *y = calloc((size_t)s->nrows, sizeof *y);
+    bl_napath_result res;
+    atomic_int cancel = 1;
+    assert_int_equal(bl_napath_run(s, 1e-10, 1e-10, 1e-10, 100, 0, &cancel, 0, x, zl, zu, y, &res, NULL), 1);
+    assert_true(res.stopped);
+    assert_int_equal(res.iterations, 0);
+    atomic_store(&cancel, 0);
+    assert_int_equal(bl_napath_run(s, 1e-10, 1e-10, 1e-10, 100, 0, &cancel, 0, x, zl, zu, y, &res, NULL), 0);
+    assert_false(res.stopped);
+    assert_true(fabs(x[s->nforce] - 0.5) <= 1e-6);
+    free(x);
+    free(zl);
+    free(zu);
+    free(y);
+    bl_system_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -252,6 +278,7 @@ int main(void)
         cmocka_unit_test(warm_from_the_path),
         cmocka_unit_test(cut_short_taken_when_near),
         cmocka_unit_test(deep_or_the_targets_point),
+        cmocka_unit_test(stopped_when_cancelled),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
