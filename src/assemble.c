@@ -328,14 +328,6 @@ void bl_system_speed(const bl_system *s, const double *w, const double *dt, cons
         if (s->col_kind[j] == BL_COL_TWIST) speed[s->col_point[j]] = hypot(speed[s->col_point[j]], w[j]);
 }
 
-double bl_system_joint_opening(const bl_system *s, const double *dn, int p)
-{
-    int g = s->lead[p];
-    double d = dn[g];
-    for (int q = g + 1; q < s->npoints && s->lead[q] == g; q++) d = fmax(d, dn[q]);
-    return d;
-}
-
 void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, double *force)
 {
     memset(force, 0, 4 * (size_t)m->ninterfaces * sizeof *force);

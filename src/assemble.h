@@ -129,10 +129,6 @@ void bl_system_fixed_bounds(const bl_system *s, const double *n, const double *C
 void bl_system_speed(const bl_system *s, const double *w, const double *dt, const double *dt3,
                      double *speed);
 
-/* How far the joint of point p opens: the largest of dn over the points
- * its lead point leads (p's own dn but in the 3D resultant model, where a
- * joint that opens anywhere loses the cohesion it carries as a whole). */
-double bl_system_joint_opening(const bl_system *s, const double *dn, int p);
 void bl_system_free(bl_system *s);
 
 /* For the builders (2D in assemble.c, 3D in assemble3.c): a system with

@@ -34,9 +34,7 @@ typedef struct run {
     double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt, *dt3; /* dt3: 3D, along t3 */
     double *resist; /* 3D: per joint, the most a pyramid edge resists its motion */
     double *speed;  /* 3D: per joint, how fast it slides (and twists) */
-    double *coh;    /* per point: the cohesion of the next fixed LP */
-    double *n_first, *coh_first; /* r->n and r->coh where start 0 stopped */
-    int cohesive;   /* some point has cohesion */
+    double *n_first; /* r->n where start 0 stopped */
     double t0;             /* when the run began */
     int iterations;        /* of the random-state LPs */
     int shown;             /* a progress line is on the screen */
@@ -83,7 +81,6 @@ static void run_free(run *r)
     bl_system_free(r->fixed);
     free(r->n);
     free(r->n_first);
-    free(r->coh_first);
     free(r->lo);
     free(r->hi);
     free(r->clo);
@@ -94,7 +91,6 @@ static void run_free(run *r)
     free(r->dt3);
     free(r->resist);
     free(r->speed);
-    free(r->coh);
     free(r->obj);
     free(r->best_x);
     free(r->best_y);
@@ -219,9 +215,11 @@ static bl_lp_status certificate_lp(run *r, const bl_solve_options *asked, double
 
 /* The certificate's bounds in clo, chi: forces in Coulomb's cone that fit
  * the mechanism y of the last LP, its motions below slip times the largest
- * taken as none: no force where a point opens, on the cone's edge against
- * the slip where it slides, anywhere in the cone where it stays closed;
- * alpha free. */
+ * taken as none: no normal force (nor friction) where a point opens, on
+ * the cone's edge against the slip where it slides, anywhere in the cone
+ * where it stays closed; cohesion at its bound against the slip where the
+ * point slides (opening or not), anywhere within its bounds elsewhere:
+ * the yield surface of (T3) with its tension cut-off; alpha free. */
 static void certificate_bounds(run *r, const double *y, double slip)
 {
     const bl_system *c = r->cone;
@@ -243,9 +241,8 @@ static void certificate_bounds(run *r, const double *y, double slip)
     for (int j = 0; j < c->nforce; j++) {
         int p = c->col_point[j];
         double lo = c->lo[j], hi = c->hi[j];
-        if (r->dn[p] > eps ||
-            (c->col_kind[j] == BL_COL_COHESION && bl_system_joint_opening(c, r->dn, p) > eps)) {
-            lo = hi = 0.0; /* opening: no force, and no cohesion where its joint opens */
+        if (r->dn[p] > eps && c->col_kind[j] != BL_COL_COHESION) {
+            lo = hi = 0.0; /* opening: no normal force, hence no friction */
         } else if (c->dim == 3) {
             /* 3D, sliding: friction only on the pyramid's edges (the
              * octagon's corner, or side) that resist the slip most, and
@@ -437,9 +434,9 @@ static void name_blocks(run *r, bl_solution *s, int lp)
         snprintf(s->note + len, sizeof s->note - len, " and %d more", named - 8);
 }
 
-/* After LP j (forces x, mechanism y, alpha a; the alpha before it prev):
- * the damping of beta and the cohesion and normal forces of the next LP. */
-static void relax(run *r, const bl_seqlp_options *o, int j, const double *x, const double *y,
+/* After LP j (forces x, alpha a; the alpha before it prev):
+ * the damping of beta and the normal forces of the next LP. */
+static void relax(run *r, const bl_seqlp_options *o, int j, const double *x,
                   double a, double prev, double *beta, double *last, int *turns)
 {
     const bl_system *f = r->fixed;
@@ -453,18 +450,6 @@ static void relax(run *r, const bl_seqlp_options *o, int j, const double *x, con
         if (j >= 20 && (a - prev) * *last < 0.0 && ++*turns % 3 == 0 && *beta > 0.1 * o->beta)
             *beta *= 0.5;
         *last = a - prev;
-    }
-    /* relax the cohesion towards none where this LP's mechanism opens a
-     * joint, as the certificate and the verification take it: kept whole,
-     * an opening joint's cohesion let the LPs lean on a force the
-     * certificate refuses, and W4 with cohesion 0.02 or 0.05 did not
-     * certify (doc/seqlp.md 10) */
-    if (r->cohesive) {
-        double V = point_motion(r, y);
-        for (int p = 0; p < f->npoints; p++) {
-            double keep = bl_system_joint_opening(f, r->dn, p) > o->slip * V ? 0.0 : f->cohesion[p];
-            r->coh[p] = (1.0 - *beta) * r->coh[p] + *beta * keep;
-        }
     }
     /* relax the normal forces towards this LP's */
     for (int p = 0; p < f->npoints; p++) r->n[p] *= 1.0 - *beta;
@@ -573,7 +558,7 @@ static int certify_ahead(const run *r, const bl_seqlp_options *o)
 }
 
 /* What a start carries from one fixed LP to the next besides the normal
- * forces and cohesion (r->n, r->coh), so that a start cut at its cap can
+ * forces (r->n), so that a start cut at its cap can
  * go on where it stopped (bl_seqlp_solve). */
 typedef struct start_state {
     double beta, last; /* the relaxation and the last change of alpha */
@@ -607,7 +592,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
     int j;
     for (j = ss->done; j < ss->cap; j++) {
         if (!ahead) {
-            bl_system_fixed_bounds(f, r->n, r->coh, r->lo, r->hi);
+            bl_system_fixed_bounds(f, r->n, f->cohesion, r->lo, r->hi);
             if (!r->lp_fixed) {
                 r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
                 if (!r->lp_fixed) return -1;
@@ -686,8 +671,8 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
                 bl_lp_mark(r->lp_fixed) == 0) {
                 /* the certificate on another thread, the next LP here */
                 memcpy(r->yc, y, (size_t)f->nrows * sizeof *r->yc);
-                relax(r, o, j, x, y, a, prev, &beta, &last, &turns);
-                bl_system_fixed_bounds(f, r->n, r->coh, r->lo, r->hi);
+                relax(r, o, j, x, a, prev, &beta, &last, &turns);
+                bl_system_fixed_bounds(f, r->n, f->cohesion, r->lo, r->hi);
                 bl_lp_set_bounds(r->lp_fixed, r->lo, r->hi);
                 int two = pthread_create(&other, NULL, certify_beside, &c) == 0;
                 if (!two) certify_beside(&c);
@@ -715,8 +700,8 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
             fails++;
             near_now = near_next;
         }
-        if (!ahead) relax(r, o, j, x, y, a, prev, &beta, &last, &turns);
-        /* damping and cohesion as relaxed, the normal forces the nearest */
+        if (!ahead) relax(r, o, j, x, a, prev, &beta, &last, &turns);
+        /* damping as relaxed, the normal forces the nearest */
         if (near_now && nearest_forces(r, a, y, o, s, err)) return -1;
         prev = a;
     }
@@ -1047,10 +1032,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.dt3 = calloc((size_t)np + 1, sizeof *r.dt3);
     r.resist = calloc((size_t)np + 1, sizeof *r.resist);
     r.speed = calloc((size_t)np + 1, sizeof *r.speed);
-    r.coh = calloc((size_t)np + 1, sizeof *r.coh);
     r.n_first = malloc(((size_t)np + 1) * sizeof *r.n_first);
-    r.coh_first = malloc(((size_t)np + 1) * sizeof *r.coh_first);
-    for (int p = 0; p < np; p++) r.cohesive |= r.fixed->cohesion[p] > 0.0;
     r.lo = malloc((size_t)nc * sizeof *r.lo);
     r.hi = malloc((size_t)nc * sizeof *r.hi);
     r.clo = malloc((size_t)ncc * sizeof *r.clo);
@@ -1061,8 +1043,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.best_y = malloc((size_t)r.fixed->nrows * sizeof *r.best_y);
     r.yc = malloc((size_t)r.fixed->nrows * sizeof *r.yc);
     r.xc = malloc((size_t)ncc * sizeof *r.xc);
-    if (!r.n || !r.n_first || !r.coh_first || !r.dn || !r.dt || !r.dt3 || !r.resist ||
-        !r.speed || !r.coh || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
+    if (!r.n || !r.n_first || !r.dn || !r.dt || !r.dt3 || !r.resist ||
+        !r.speed || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
         !r.best_x || !r.best_y || !r.yc || !r.xc) {
         bl_error_set(err, "solve: out of memory");
         goto fail;
@@ -1126,16 +1108,12 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                 continue;
             }
         }
-        memcpy(r.coh, r.fixed->cohesion, (size_t)np * sizeof *r.coh);
         /* from a path that went deep, start 0 begins at the path's alpha */
         start_state ss = fresh_start(o, k == 0 && s->path_taken && pj.res.deep ? s->path_alpha : from);
         if (timed_start(&r, o, s, &ss, 0, lps0, its0, tk, &stop, err) < 0) goto fail;
         if (k == 0) {
             first = ss;
-            if (first.done == first.cap) {
-                memcpy(r.n_first, r.n, (size_t)np * sizeof *r.n);
-                memcpy(r.coh_first, r.coh, (size_t)np * sizeof *r.coh);
-            }
+            if (first.done == first.cap) memcpy(r.n_first, r.n, (size_t)np * sizeof *r.n);
             if (!sliding) {
                 s->alpha_rigid = s->alpha_assoc;
                 s->assoc_is_solution = 1;
@@ -1168,7 +1146,6 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     if (!r.found && stop == BL_LP_OPTIMAL && sliding && o->starts < 0 && first.cap > 0 &&
         first.done == first.cap) {
         memcpy(r.n, r.n_first, (size_t)np * sizeof *r.n);
-        memcpy(r.coh, r.coh_first, (size_t)np * sizeof *r.coh);
         first.cap += o->max_lps;
         if (timed_start(&r, o, s, &first, 1, s->lps, s->iterations + r.iterations, bl_clock(),
                         &stop, err) < 0)

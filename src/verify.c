@@ -198,14 +198,11 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         if (cone->col_kind[j] == BL_COL_COHESION) {
             int p = cone->col_point[j];
             double along = w[j] - dn[p] * cone->col_nt[3 * j];
-            /* an opening point (a joint of the resultant model opening
-             * anywhere) has lost its cohesion with its forces */
-            if (bl_system_joint_opening(cone, dn, p) <= slip * V) h[cone->lead[p]] += cone->hi[j] * fabs(along);
+            h[cone->lead[p]] += cone->hi[j] * fabs(along);
         }
     double adm = 0.0, comp = 0.0, flow = 0.0, dil = 0.0, dissipation = 0.0;
     for (int p = 0; p < np; p++) {
-        double C = dn[p] <= slip * V ? cone->cohesion[p] : 0.0; /* opening: no cohesion */
-        double R = isinf(cone->mu[p]) ? 0.0 : cone->mu[p] * n[p] + C;
+        double R = isinf(cone->mu[p]) ? 0.0 : cone->mu[p] * n[p] + cone->cohesion[p];
         adm = fmax(adm, -dn[p] / V);
         comp = fmax(comp, fabs(n[p] * dn[p]) / (X * V));
         if (isfinite(cone->mu[p]) && d3) {

@@ -55,12 +55,23 @@ for _, case in ipairs { { 0.3, 2, 0.65 }, { 0.5, 3, 0.2 }, { 1.0, 1, 0.9 } } do
 end
 
 -- Cohesion c adds c * b * thickness to the sliding capacity, nothing to
--- rocking: alpha = min(mu + c b t / W, b/h) with W = density b h t.
-for _, c in ipairs { 0.05, 0.2 } do
-  column(1.0, 0.5, 1, { mu = 0.3, cohesion = c, density = 2, thickness = 0.5 })
-  local W = 2 * 1.0 * 0.5 * 0.5
-  T.near(solve {}.alpha, math.min(0.3 + c * 1.0 * 0.5 / W, 2), 1e-9,
-         ("cohesion %g: alpha = mu + c b t / W"):format(c))
+-- rocking: alpha = min(mu + c b t / W, b/h) with W = density b h t, for
+-- either flow rule.  Where rocking governs (c = 1.8, 5) the heel opens at
+-- n = 0 with shear still on it: (T3) with its tension cut-off keeps the
+-- cohesion of an opening point (doc/seqlp.md 10; the sequence once took
+-- it away and certified nothing there).  A friction of 1e-9 gives the
+-- same alpha as none, where only the associative LP runs.
+for _, c in ipairs { 0.05, 0.2, 1.8, 5 } do
+  for _, mu in ipairs { 0.3, 1e-9 } do
+    for _, flow in ipairs { "associative", "nonassociative" } do
+      column(1.0, 0.5, 1, { mu = mu, cohesion = c, density = 2, thickness = 0.5 })
+      local W = 2 * 1.0 * 0.5 * 0.5
+      local r = solve { flow = flow, progress = false }
+      T.near(r.alpha, math.min(mu + c * 1.0 * 0.5 / W, 2), 1e-9,
+             ("cohesion %g, mu = %g, %s: alpha = min(mu + c b t / W, b/h)"):format(c, mu, flow))
+      T.ok(r.verified, ("cohesion %g, mu = %g, %s: verified"):format(c, mu, flow), r.status)
+    end
+  end
 end
 
 -- A live point force F at height y on a b x h block: rocking when
