@@ -155,12 +155,23 @@ bl_system *bl_system_finish(bl_system *s, int nz, double *fL, bl_error *err)
     return s;
 }
 
-/* Columns at one contact point of interface k. */
-static int point_columns(const bl_interface *k, double C, bl_friction_form form,
+/* Columns at contact point e (0 or 1) of interface k.  A joint that
+ * cannot slide has one free shear, at its first point: the shears of its
+ * two points act along the same line, so that only their sum enters
+ * equilibrium, and a free shear at each point leaves their difference
+ * unbounded in every LP, which the interior point followed without
+ * converging (an arch of 600 voussoirs at mu = inf: "numerical trouble",
+ * doc/theory.md 2). */
+static int point_columns(const bl_interface *k, double C, bl_friction_form form, int e,
                          bl_column_kind kind[3])
 {
     int n = 0;
-    if (isinf(k->mu) || form == BL_FRICTION_FIXED) {
+    if (isinf(k->mu)) {
+        kind[n++] = BL_COL_NORMAL;
+        if (e == 0) kind[n++] = BL_COL_SHEAR;
+        return n;
+    }
+    if (form == BL_FRICTION_FIXED) {
         kind[n++] = BL_COL_NORMAL;
         kind[n++] = BL_COL_SHEAR;
         return n;
@@ -196,8 +207,9 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
     int nforce = 0;
     bl_column_kind kind[3];
     for (int k = 0; k < m->ninterfaces; k++)
-        nforce += 2 * point_columns(&m->interfaces[k], cohesion_share(m, &m->interfaces[k]), form,
-                                    kind);
+        for (int e = 0; e < 2; e++)
+            nforce += point_columns(&m->interfaces[k], cohesion_share(m, &m->interfaces[k]), form,
+                                    e, kind);
     double *fL = calloc((size_t)s->nrows, sizeof *fL);
     if (!fL || bl_system_allocate(s, nforce, 2 * m->ninterfaces,
                                   6 * (size_t)nforce + (size_t)s->nrows)) {
@@ -209,11 +221,11 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
         double C = cohesion_share(m, in) / s->W0;
-        int nk = point_columns(in, C, form, kind);
         s->cohesion[2 * k] = s->cohesion[2 * k + 1] = C;
         s->mu[2 * k] = s->mu[2 * k + 1] = in->mu;
         bl_vec2 nu = in->normal, tau = bl_v2(-nu.y, nu.x);
         for (int e = 0; e < 2; e++) {
+            int nk = point_columns(in, C, form, e, kind);
             for (int q = 0; q < nk; q++, c++) {
                 double dn = 1.0, dt = 0.0, lo = 0.0, hi = INFINITY;
                 switch (kind[q]) {

@@ -16,23 +16,26 @@
  * pyramid's k edges (plus the adaptive cone's added ones), inscribed in the
  * cone (on it) or circumscribed (its facets touching it, a facet centred on
  * t2); in the resultant model each edge twice, with the couple +1 and -1;
- * the normal alone without friction; the normal and free shears (and, in
- * the resultant model, a free couple) when joints cannot slide.  Returns
- * the number of columns. */
+ * the normal alone without friction; when joints cannot slide, the normal
+ * at every point, and two free shears and a free couple about the normal
+ * (none where the joint has one point) at its first: free shears at every
+ * point would leave all but the joint's resultant and twist unbounded in
+ * every LP (the simplex called a dome of 128 blocks infeasible, 2D arches
+ * stopped the interior point, doc/theory.md 2).  Returns the number of
+ * columns. */
 static int point_columns(double mu, const bl_cone *cone, int point, int resultant, int first,
-                         double nt[][3], double *couple, bl_column_kind *kind)
+                         int np, double nt[][3], double *couple, bl_column_kind *kind)
 {
     int n = 0;
     if (isinf(mu)) {
         double d[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        /* the resultant model's free shear and couple once per interface */
-        int shears = resultant && !first ? 0 : 2;
+        int shears = first ? 2 : 0;
         for (int i = 0; i <= shears; i++, n++) {
             memcpy(nt[n], d[i], sizeof d[i]);
             couple[n] = 0.0;
             kind[n] = i ? BL_COL_SHEAR : BL_COL_NORMAL;
         }
-        if (resultant && first) {
+        if (first && (resultant || np > 1)) {
             nt[n][0] = nt[n][1] = nt[n][2] = 0.0;
             couple[n] = 1.0;
             kind[n++] = BL_COL_SHEAR;
@@ -206,7 +209,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
         int cohesive = in->cohesion > 0.0 && isfinite(mu);
         for (int q = 0; q < in->np; q++, npoints++)
             nforce += capped ? fixed_columns(cone, resultant, q == 0, nt, couple, kind)
-                             : point_columns(mu, cone, npoints, resultant, q == 0, nt, couple, kind) +
+                             : point_columns(mu, cone, npoints, resultant, q == 0, in->np, nt, couple, kind) +
                                    (cohesive && (!resultant || q == 0)
                                         ? (cone->facets % 2 ? cone->facets : cone->facets / 2) + resultant
                                         : 0);
@@ -240,7 +243,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
         double CA = isfinite(in->mu) ? in->cohesion * in->area3 / s->W0 : 0.0;
         for (int q = 0; q < in->np; q++, point++) {
             int ncol = capped ? fixed_columns(cone, resultant, q == 0, nt, couple, kind)
-                              : point_columns(mu, cone, point, resultant, q == 0, nt, couple, kind);
+                              : point_columns(mu, cone, point, resultant, q == 0, in->np, nt, couple, kind);
             for (int e = 0; e < ncol; e++) bound[e] = INFINITY;
             double C = resultant ? (q == 0 ? CA : 0.0) : CA / in->np;
             if (C > 0.0 && isfinite(mu))
@@ -283,7 +286,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
                     double sg = side ? 1.0 : -1.0;
                     bl_vec3 g = m->blocks[blk[side]].centroid3;
                     bl_vec3 arm = bl_v3_scale(bl_v3_sub(in->poly[q], g), 1.0 / s->L0);
-                    bl_vec3 mo = moment(arm, f);
+                    bl_vec3 mo = bl_v3_add(moment(arm, f), bl_v3_scale(tw, 1.0 / s->L0));
                     if (resultant) {
                         bl_vec3 armc = bl_v3_scale(bl_v3_sub(cen, g), 1.0 / s->L0);
                         mo = bl_v3_add(bl_v3_add(moment(arm, fn), moment(armc, ft)),

@@ -177,7 +177,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     bl_lp_status st = BL_LP_FAILED;
     dead_check dead = {0};
     int reuse = 0; /* the check will re-solve lp */
-    double t2 = bl_clock(), t3 = t2, prev = NAN, solve_time = 0.0;
+    double t2 = bl_clock(), t3 = t2, prev = NAN, solve_time = 0.0, cap = INFINITY;
     int lost = 0; /* iterations of LPs solved again */
     for (int round = 1;; round++) {
         sys = m->dim == 3 ? bl_system_build3(m, &cone, BL_FRICTION_CONE, err) : bl_system_build(m, BL_FRICTION_CONE, err);
@@ -202,11 +202,14 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
              * and the interior point does not converge on the unbounded
              * optimal face (doc/seqlp.md 13).  Every force column capped
              * far above any force equilibrium needs (BL_LP_CONFINED)
-             * bounds it without a cost that would tilt the mechanism,
-             * which the verification checks. */
-            double cap = BL_LP_CONFINED * sys->nrows;
-            for (int j = 0; j < sys->nforce; j++)
+             * bounds it without a cost that would tilt the mechanism;
+             * the verification checks the answer against the bounds
+             * without the caps (a force at its cap would fail it). */
+            cap = BL_LP_CONFINED * sys->nrows;
+            for (int j = 0; j < sys->nforce; j++) {
                 if (isinf(sys->hi[j])) sys->hi[j] = cap;
+                if (isinf(sys->lo[j])) sys->lo[j] = -cap;
+            }
             lost += bl_lp_iterations(lp);
             bl_lp_free(lp);
             lp = bl_solve_lp(sys, sys->lo, sys->hi, NULL, o, err);
@@ -271,6 +274,10 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     s->rows = sys->nrows;
     s->cols = sys->ncols;
     s->tolerance = o->tolerance;
+    for (int j = 0; isfinite(cap) && j < sys->nforce; j++) {
+        if (sys->hi[j] == cap) sys->hi[j] = INFINITY;
+        if (sys->lo[j] == -cap) sys->lo[j] = -INFINITY;
+    }
     if (st == BL_LP_OPTIMAL) {
         const double *x = bl_lp_primal(lp), *y = bl_lp_dual(lp);
         s->alpha = x[sys->nforce];

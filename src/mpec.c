@@ -166,7 +166,12 @@ static int motion_columns(layout *l, const bl_system *f)
     }
     for (int q = 0; f->dim == 3 && q < np; q++) {
         if (f->lead[q] != q) continue; /* a resultant joint's slip is its lead's */
-        if (l->js2[q] < 0) return -1; /* every other 3D point has two (assemble3.c) */
+        if (l->js2[q] < 0) {
+            /* a rigid joint's points but its first have none (assemble3.c):
+             * their slip, held at zero, is not read from the motions */
+            if (isinf(f->mu[q])) continue;
+            return -1; /* every other 3D point has two */
+        }
         const double *a = f->col_nt + 3 * l->js[q], *b = f->col_nt + 3 * l->js2[q];
         double det = a[1] * b[2] - a[2] * b[1], *K = l->K + 4 * q;
         K[0] = b[2] / det;
@@ -262,7 +267,7 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
     }
 
     /* linear rows */
-    int cap = 0, row = 0, rcap = nu + 2 + 4 * np + 3 * nx;
+    int cap = 0, row = 0, rcap = nu + 2 + 4 * np + 4 * nx;
     p->glo = malloc(((size_t)rcap + npairs) * sizeof *p->glo);
     p->ghi = malloc(((size_t)rcap + npairs) * sizeof *p->ghi);
     if (!p->glo || !p->ghi) return -1;
@@ -311,6 +316,17 @@ static int build(nlp *p, layout *l, const bl_system *c, const bl_system *f, int 
         if (l->sp[q] >= 0 && (add(p, &cap, row, l->sp[q], -1.0) ||
                               add(p, &cap, row, l->sp[q] + 1, 1.0)))
             return -1;
+        ROW(0.0, 0.0);
+    }
+    /* 3D: a rigid joint's free couple (assemble3.c) does no work, so the
+     * joint does not twist: its power is zero (without this row a dome at
+     * mu = inf twisted at its joints and ended "not complementary") */
+    for (int j = 0; d3 && j < nx; j++) {
+        const double *nt = c->col_nt + 3 * j;
+        if (c->col_kind[j] != BL_COL_SHEAR || nt[0] != 0.0 || nt[1] != 0.0 || nt[2] != 0.0 ||
+            !isinf(c->lo[j]))
+            continue;
+        if (add_motion(p, &cap, c, j, l->u0, row, 1.0)) return -1;
         ROW(0.0, 0.0);
     }
     /* the pairs: a force column and its slack, a cohesion distance and a slip */

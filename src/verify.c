@@ -102,6 +102,9 @@ int bl_verify(const bl_system *s, double alpha, const double *x, const double *y
             comp = fmax(comp, fabs((x[j] - s->lo[j]) * w[j]) / (X * V));
         } else if (!lower && !upper) {  /* free: needs w = 0 */
             adm = fmax(adm, fabs(w[j]) / V);
+        } else if (!lower) {            /* x <= hi: needs w <= 0, x w = 0 */
+            adm = fmax(adm, w[j] / V);
+            comp = fmax(comp, fabs((s->hi[j] - x[j]) * w[j]) / (X * V));
         } else {                        /* lo <= x <= hi: x = lo where w > 0, hi where w < 0 */
             double cap = w[j] > 0.0 ? s->lo[j] : s->hi[j];
             comp = fmax(comp, fabs((cap - x[j]) * w[j]) / (X * V));

@@ -24,9 +24,13 @@ int bl_write_vtk(const bl_solution *s, const char *file, bl_error *err)
         ncells++;
         nidx += 1 + m->interfaces[k].np;
     }
-    fprintf(f, "# vtk DataFile Version 3.0\n");
-    fprintf(f, "blocklim %s: alpha %.10g (%s); cells: block faces, then interfaces\n",
-            m->name[0] ? m->name : "model", s->alpha, bl_status_name(s->status));
+    /* the title: one line of at most 255 characters, the format's limit */
+    char title[256];
+    snprintf(title, sizeof title, "blocklim %s: alpha %.10g (%s); cells: block faces, then interfaces",
+             m->name[0] ? m->name : "model", s->alpha, bl_status_name(s->status));
+    for (char *c = title; *c; c++)
+        if ((unsigned char)*c < 32) *c = ' ';
+    fprintf(f, "# vtk DataFile Version 3.0\n%s\n", title);
     fprintf(f, "ASCII\nDATASET POLYDATA\nPOINTS %d double\n", npts);
     for (int b = 0; b < m->nblocks; b++)
         for (int i = 0; i < m->blocks[b].solid.nv; i++) {

@@ -47,4 +47,21 @@ T.near(r.alpha, ref.alpha, 1e-7, "241 voussoirs, mu = 100: alpha = the simplex's
 model {}
 local made = arch { n = 10 / 2, span = 4, thickness = 0.5 }
 T.eq(#made, 5, "arch{ n = 10 / 2 }: 5 voussoirs")
+
+-- Infinite friction (Heyman's rigid arch), 250 voussoirs: no joint can
+-- slide, so mu = 100 must give the same alpha (its answers need no
+-- sliding), and the interior point the simplex's.  A joint that cannot
+-- slide has one free shear: with one at each of its two points only
+-- their sum was bounded, and the interior point's answer was NOT verified
+-- (equilibrium 2.6e-6).
+local heyman = {}
+for _, case in ipairs { { math.huge, "ipm" }, { math.huge, "simplex" }, { 100, "simplex" } } do
+  model { mu = case[1] }
+  arch { n = 250, radius = 1, thickness = 0.15 }
+  local rr = solve { lp = case[2], progress = false }
+  T.ok(rr.verified, ("250 voussoirs, mu = %g, %s: verified"):format(case[1], case[2]), rr.status)
+  heyman[#heyman + 1] = rr.alpha
+end
+T.near(heyman[1], heyman[2], 1e-8, "250 voussoirs, mu = inf: the interior point's alpha is the simplex's")
+T.near(heyman[3], heyman[2], 1e-8, "250 voussoirs: mu = 100 gives mu = inf's alpha")
 T.done()

@@ -161,5 +161,20 @@ fx, fy, fz = tonumber(fx), tonumber(fy), tonumber(fz)
 T.ok(fx and math.abs(fx + 0.25) < 1e-9 and math.abs(fy) < 1e-9 and math.abs(fz - 0.5) < 1e-9,
      "vtk: the interface force balances the block's weight and its live load", last)
 T.raises(function() r:vtk(vtk) end, "vtk: a 2D result is refused", "vtk", "3D")
+-- a model name with a line break: the title stays the file's second line,
+-- "ASCII" its third, as the format requires
+model { dim = 3, mu = 0.6, name = "two\nlines" }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 0.5, 1, 1 } }
+solve {}:vtk(vtk)
+f = io.open(vtk, "r")
+local lines = {}
+for line in f:lines() do
+  lines[#lines + 1] = line
+  if #lines == 3 then break end
+end
+f:close()
+T.ok(lines[3] == "ASCII" and #lines[2] <= 255, "vtk: a name with a line break keeps the title on one line",
+     lines[2])
 os.remove(vtk)
 T.done()
