@@ -450,16 +450,19 @@ static void joint3(cairo_t *cr, const pic *P, int i, int e, int vertex)
 }
 
 /* The pieces of joint i's marker (see joint3) whose point (an edge's
- * midpoint, or the corner) lies on a visible face of either block, into F
- * with the depth of the nearest such face, so that they paint just over it
- * and under whatever is nearer; pieces on no visible face are inside the
- * structure and left out.  depth: per face of every block (face_off[b] +
+ * midpoint, or the corner) lies on a visible face of the block the marker
+ * rides with, into F with the depth of the nearest visible face of either
+ * block that holds it, so that they paint just over both and under
+ * whatever is nearer; pieces on no visible face of that block are inside
+ * the structure or behind it and left out (judged by either block, a joint
+ * on a slab's top was drawn over the slab seen from below).  depth: per face of every block (face_off[b] +
  * k), NAN where turned away.  Returns the number added. */
 static int joint_pieces(const pic *P, int i, const int *face_off, const double *depth, face3 *F)
 {
     const bl_model *m = P->m;
     const bl_interface *f = &m->interfaces[i];
     bl_state st = P->s->state[i];
+    int side = anchor3(P, f);
     double size = 0.0;
     for (int e = 0; e < f->np; e++)
         size += bl_v3_norm(bl_v3_sub(f->poly[(e + 1) % f->np], f->poly[e]));
@@ -476,17 +479,71 @@ static int joint_pieces(const pic *P, int i, const int *face_off, const double *
             }
             bl_vec3 q = vertex ? f->poly[e] : bl_v3_scale(bl_v3_add(f->poly[e], f->poly[e1]), 0.5);
             double d = -INFINITY;
-            int blk[2] = {f->a, f->b};
+            int seen = 0, blk[2] = {side, side == f->a ? f->b : f->a};
             for (int j = 0; j < 2; j++) {
                 const bl_polyhedron *S = &m->blocks[blk[j]].solid;
                 for (int k = 0; k < S->nf; k++) {
                     double dk = depth[face_off[blk[j]] + k];
-                    if (!isnan(dk) && dk > d && bl_polyhedron_on_face(S, k, q, 1e-6 * size)) d = dk;
+                    if (isnan(dk) || !bl_polyhedron_on_face(S, k, q, 1e-6 * size)) continue;
+                    seen |= j == 0;
+                    d = fmax(d, dk);
                 }
             }
+            if (!seen) continue;
             if (d > -INFINITY) F[n++] = (face3){i, -1 - (2 * e + vertex), d + 1e-9 * (1.0 + fabs(d)), 0.0};
         }
     return n;
+}
+
+/* Where the face of F[u] lies against the plane nrm . x = d0: 1 wholly in
+ * front of it (towards the viewer, or on it), -1 wholly behind, 0 across. */
+static int face_side(const pic *P, const face3 *u, bl_vec3 nrm, double d0, double tol)
+{
+    const bl_polyhedron *S = &P->m->blocks[u->block].solid;
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = S->fs[u->face]; i < S->fs[u->face + 1]; i++) {
+        double h = bl_v3_dot(nrm, moved3(P, u->block, S->v[S->fi[i]])) - d0;
+        lo = fmin(lo, h);
+        hi = fmax(hi, h);
+    }
+    return lo >= -tol ? 1 : hi <= tol ? -1 : 0;
+}
+
+/* The painting keys of the supports' faces (F[0..n), keys in depth too).
+ * A support's face can be far larger than a block's (a base slab under a
+ * whole building), and its centre's depth says little: blocks standing on
+ * the slab behind its centre were painted over by its top.  A flat face
+ * hides only what lies behind its plane and is hidden only by what lies in
+ * front, so its key is put after every block face wholly behind its plane
+ * and before every one wholly in front, where one key does both. */
+static void support_keys(const pic *P, face3 *F, int n, const int *face_off, double *depth)
+{
+    const bl_model *m = P->m;
+    for (int t = 0; t < n; t++) {
+        const bl_block *B = &m->blocks[F[t].block];
+        if (!B->support) continue;
+        const bl_polyhedron *S = &B->solid;
+        int a0 = S->fs[F[t].face], len = S->fs[F[t].face + 1] - a0;
+        bl_vec3 c = {0, 0, 0}, nrm = {0, 0, 0};
+        for (int i = 0; i < len; i++) {
+            bl_vec3 p = S->v[S->fi[a0 + i]], q = S->v[S->fi[a0 + (i + 1) % len]];
+            c = bl_v3_add(c, p);
+            nrm = bl_v3_add(nrm, bl_v3_cross(p, q));
+        }
+        nrm = bl_v3_scale(nrm, 1.0 / bl_v3_norm(nrm)); /* towards the viewer: the face is shown */
+        double d0 = bl_v3_dot(nrm, c) / len, tol = 1e-9 * (1.0 + fabs(d0));
+        double behind = -INFINITY, front = INFINITY;
+        for (int u = 0; u < n; u++) {
+            if (m->blocks[F[u].block].support) continue;
+            int side = face_side(P, &F[u], nrm, d0, tol);
+            if (side > 0) front = fmin(front, F[u].depth);
+            if (side < 0) behind = fmax(behind, F[u].depth);
+        }
+        if (!(behind < front)) continue;
+        double gap = fmin(1e-9 * (1.0 + fabs(F[t].depth)), 0.25 * (front - behind));
+        double key = fmin(fmax(F[t].depth, behind + gap), front - gap);
+        F[t].depth = depth[face_off[F[t].block] + F[t].face] = key;
+    }
 }
 
 /* 3D: the blocks as moved by the mechanism, seen along the view: faces
@@ -534,6 +591,7 @@ static void draw3(cairo_t *cr, const pic *P)
             F[n++] = (face3){b, k, depth[face_off[b] + k], fabs(bl_v3_dot(nrm, light))};
         }
     }
+    support_keys(P, F, n, face_off, depth);
     for (int i = 0; joints && i < m->ninterfaces; i++)
         if (marked3(P, i)) n += joint_pieces(P, i, face_off, depth, F + n);
     qsort(F, (size_t)n, sizeof *F, farther);

@@ -141,6 +141,44 @@ T.ok(en == 1620 and ehi <= 0.1 * 10.1 and elo >= 0.2 * 1.2,
      ("%d outlines, %g to %g px"):format(en, elo, ehi))
 os.remove(svg)
 
+-- 3D painting order: two posts standing on a slab far larger than they
+-- are, at its back corners, seen from above.  Nothing on the slab can be
+-- hidden by its top face, so the top (the largest grey polygon) must be
+-- painted before every block face; by the depth of its centre it came
+-- after them and covered the posts' feet.
+local function fills(file)
+  local fh = io.open(file, "rb")
+  local doc = fh and fh:read("a") or ""
+  if fh then fh:close() end
+  local out = {}
+  for style, d in doc:gmatch('<path style="[^"]-fill:rgb%(([^)]*)%)[^"]*" d="([^"]*)"') do
+    local r, g, b = style:match("([%d.]+)%%,([%d.]+)%%,([%d.]+)%%")
+    local xs, ys = {}, {}
+    for x, y in d:gmatch("[ML] ([-%d.]+) ([-%d.]+)") do xs[#xs + 1], ys[#ys + 1] = tonumber(x), tonumber(y) end
+    local area = 0
+    for i = 1, #xs do
+      local j = i % #xs + 1
+      area = area + xs[i] * ys[j] - xs[j] * ys[i]
+    end
+    out[#out + 1] = { grey = r == g and g == b, area = math.abs(area) / 2 }
+  end
+  return out
+end
+model { dim = 3, mu = 0.65 }
+box { size = { 6, 6, 0.3 }, at = { 0, 0, -0.3 }, support = true }
+box { size = { 0.4, 0.4, 1 }, at = { -2.5, 2.5, 0 } }
+box { size = { 0.4, 0.4, 1 }, at = { 2.5, 2.5, 0 } }
+solve { flow = "associative" }:svg(svg, { view = { -30, 25 } })
+local order, top, first_block = fills(svg), nil, nil
+for i, p in ipairs(order) do
+  if p.grey and (not top or p.area > order[top].area) then top = i end
+  if not p.grey and not first_block then first_block = i end
+end
+T.ok(top and first_block and top < first_block,
+     "3D picture: the slab's top is painted before the posts standing on it",
+     ("top at %s, first block face at %s of %d"):format(tostring(top), tostring(first_block), #order))
+os.remove(svg)
+
 -- VTK: a block 0.5 x 1 x 1 (weight 0.5) rocking at alpha = b/h = 0.5; the
 -- interface force on it balances its weight and the live load, (-0.25, 0, 0.5)
 local vtk = dir .. "/blocklim_test.vtk"
