@@ -44,6 +44,8 @@ function Result.__tostring(r)
     if r.alpha_assoc == math.huge and r.status == "unbounded" then
       say("  the associative LP and the one without friction are both unbounded: no mechanism")
       say("  moves, with dilatancy or without (%d LPs in the sequence)", r.lps)
+    elseif r.alpha_assoc ~= r.alpha_assoc then
+      say("  the associative LP, where the sequence starts, stopped first: no LP of the sequence ran")
     elseif r.alpha_assoc == math.huge then
       say("  no associative alpha (unbounded: with dilatancy no mechanism moves); %d LPs in", r.lps)
       say("  the sequence%s; its first fixed LP has no friction", last)
@@ -133,9 +135,12 @@ function Result.__tostring(r)
     say("  complementarity by %s, started from %s%s; sum of products %s", i.complementarity,
         i.start, i.alpha_start == i.alpha_start and (" (alpha %.6g)"):format(i.alpha_start) or "",
         g(i.pairs))
-    if i.kept_start then
+    if i.kept_start and (i.status == "solved" or i.status == "solved to acceptable level") then
       say("  Ipopt's point (alpha %.6g) is not a lower verified answer: the start's certified", i.alpha)
       say("  answer stands")
+    elseif i.kept_start then
+      say("  Ipopt stopped (%s) at alpha %.6g, not a verified answer: the start's answer stands",
+          i.status, i.alpha)
     end
   else
     say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,

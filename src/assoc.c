@@ -268,6 +268,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     t2 = t3 - solve_time;
 
     s->status = bl_status_of_lp(st);
+    if (s->status == BL_UNBOUNDED) s->alpha = INFINITY; /* no live load makes it collapse */
     s->lp = bl_lp_engine(lp);
     s->iterations = bl_lp_iterations(lp) + lost;
     s->factor_nnz = bl_lp_factor_nnz(lp);

@@ -386,6 +386,14 @@ static void layout(pic *P, const bl_solution *s, int width, double azimuth, doub
     double cw = te.x_advance, lw = P->has_legend ? legend(cr, P, 0.0, 0.0, 0) : 0.0;
     cairo_destroy(cr);
     cairo_surface_destroy(scratch);
+    /* a narrow picture: the text smaller, so that the caption and the
+     * legend fit between the margins (both scale with the font) */
+    double fit = dw / fmax(1e-9, fmax(cw, lw));
+    if (fit < 1.0) {
+        P->font *= fit;
+        cw *= fit;
+        lw *= fit;
+    }
 
     double line = 1.7 * P->font;
     P->caption_y = P->top + P->dh + 0.6 * margin + P->font;

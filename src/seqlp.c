@@ -999,6 +999,15 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     if ((!sliding && o->when_sliding) ||
         (!locked && ((s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) || !s->has_mechanism))) {
         path_free(&pj);
+        /* the sequence could not start (a limit, Ctrl-C, an LP that
+         * failed, no equilibrium): its result, with the associative LP's
+         * status, not an associative answer */
+        if (sliding && s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) {
+            s->method = "seqlp";
+            s->flow = "nonassociative";
+            s->alpha_assoc = s->alpha_rigid = NAN;
+            s->verified = 0;
+        }
         *out = s;
         return 0;
     }
@@ -1194,9 +1203,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                     : s->stands == 0      ? BL_UNSTABLE
                                           : BL_UNCERTIFIED;
         s->has_mechanism = 0;
-        /* an LP of fixed capacities bounds nothing; unbounded, alpha is 0
-         * as from the associative LP */
-        s->alpha = s->status == BL_UNBOUNDED ? 0.0 : NAN;
+        /* no answer; unbounded (its first, frictionless LP: no live load
+         * makes it collapse), infinite as from the associative LP */
+        s->alpha = s->status == BL_UNBOUNDED ? INFINITY : NAN;
         free(s->x);
         free(s->y);
         s->x = s->y = NULL; /* the associative start's, no longer the answer */

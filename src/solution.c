@@ -70,7 +70,7 @@ bl_solution *bl_solution_new(bl_model *c)
     s->flow = "associative";
     s->res.flow = s->res.dilatancy = NAN;
     s->stands = -1;
-    s->alpha_min = NAN;
+    s->alpha = s->alpha_min = NAN; /* until there is an answer */
     return s;
 }
 

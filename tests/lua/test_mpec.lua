@@ -169,11 +169,22 @@ T.ok(not m5.ipopt.kept_start or (m5.alpha == seq.alpha and m5.ipopt.alpha == m5.
      "W5: when the start stands, alpha is the start's and Ipopt's own alpha is reported",
      ("%s %.6f"):format(tostring(m5.ipopt.kept_start), m5.ipopt.alpha))
 
--- Failures are statuses with the last point and its residuals.
+-- Ipopt stopped short from a verified start (the sequence's certified
+-- answer): the start stands, and Ipopt's own ending is reported.
 build(walls.W4)
 local stopped = solve { method = "mpec", iterations = 3 }
-T.ok(stopped.status == "iteration limit" and stopped.residuals and not stopped.verified,
-     "Ipopt's iteration limit: a status, the last point's residuals, not verified", stopped.status)
+T.ok(stopped.status == "optimal" and stopped.verified and stopped.ipopt.kept_start and
+     stopped.ipopt.status == "iteration limit" and math.abs(stopped.alpha - 24 / 91) <= 5e-5,
+     "Ipopt's iteration limit from the sequence's answer: W4's 24/91 stands, Ipopt's limit reported",
+     ("%s %s %s"):format(stopped.status, tostring(stopped.alpha), stopped.ipopt.status))
+-- From a start that is no answer of its own (the associative one, with
+-- dilatancy): a failure is a status, with the last point's residuals and
+-- no alpha.
+stopped = solve { method = "mpec", start = "assoc", iterations = 3 }
+T.ok(stopped.status == "iteration limit" and stopped.residuals and not stopped.verified and
+     stopped.alpha ~= stopped.alpha and not stopped.ipopt.kept_start,
+     "Ipopt's iteration limit from the associative start: a status, the last point's residuals, no alpha",
+     ("%s %s"):format(stopped.status, tostring(stopped.alpha)))
 T.raises(function() solve { method = "mpec", complementarity = "exact" } end,
          "a bad complementarity names the field", "solve", "complementarity")
 T.raises(function() solve { method = "assoc", start = "cold" } end,

@@ -141,6 +141,23 @@ T.ok(en == 1620 and ehi <= 0.1 * 10.1 and elo >= 0.2 * 1.2,
      ("%d outlines, %g to %g px"):format(en, elo, ehi))
 os.remove(svg)
 
+-- A narrow picture: its caption and legend shrink to fit between the
+-- margins (0.04 of the width, 12 px at 300): no glyph starts past the
+-- right margin.  At 300 px the caption ran on to about 380 px.
+model { mu = 0.65 }
+wall { courses = walls.W1, unit = { 0.4, 0.175 } }
+solve { progress = false }:svg(svg, { width = 300 })
+f = io.open(svg, "rb")
+text = f and f:read("a") or ""
+if f then f:close() end
+local rightmost, glyphs = 0, 0
+for x in text:gmatch('<use xlink:href="#glyph[^"]*" x="([-%d.]+)"') do
+  rightmost, glyphs = math.max(rightmost, tonumber(x)), glyphs + 1
+end
+T.ok(glyphs > 20 and rightmost <= 300 - 12, "a picture 300 wide: the caption and legend within its margins",
+     ("%d glyphs, the last at x = %g"):format(glyphs, rightmost))
+os.remove(svg)
+
 -- 3D painting order: two posts standing on a slab far larger than they
 -- are, at its back corners, seen from above.  Nothing on the slab can be
 -- hidden by its top face, so the top (the largest grey polygon) must be
