@@ -185,7 +185,16 @@ static int pair3(bl_model *m, int ia, int ib, double tol, double gap, bl_contact
                     if (!c.poly) return bl_error_set(err, "contacts: out of memory");
                     for (int i = 0; i < k; i++) c.poly[i] = to3(&f, out[i]);
                     c.n3 = f.n;
+                    /* the frame along the polygon's longest edge (the
+                     * first of those within 1e-9 of it), which does not
+                     * depend on where the clipping began: along the first
+                     * edge, a dome's symmetric joints got pyramids turned
+                     * apart, and moving the dome changed alpha by 0.2 % */
                     bl_vec3 e = bl_v3_sub(c.poly[1], c.poly[0]);
+                    for (int i = 1; i < k; i++) {
+                        bl_vec3 ei = bl_v3_sub(c.poly[(i + 1) % k], c.poly[i]);
+                        if (bl_v3_norm(ei) > (1.0 + 1e-9) * bl_v3_norm(e)) e = ei;
+                    }
                     c.t2 = bl_v3_scale(e, 1.0 / bl_v3_norm(e));
                     c.t3 = bl_v3_cross(c.n3, c.t2);
                     c.area3 = area;
