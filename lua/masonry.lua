@@ -152,6 +152,10 @@ return function(M, fields)
       if not (o[1] < o[2] and o[3] <= o[4] and o[1] >= 0 and o[2] <= n) then
         fail("bond", ("field 'openings' entry %d must have 0 <= x0 < x1 <= length and c0 <= c1"):format(i))
       end
+      if not (o[3] >= 1 and o[4] <= courses and o[3] == math.floor(o[3]) and o[4] == math.floor(o[4])) then
+        fail("bond", ("field 'openings' entry %d must have courses c0, c1 from 1 to %d (courses), got %g to %g")
+          :format(i, courses, o[3], o[4]))
+      end
     end
     -- a course as pieces {x0, x1, y0, y1} in units of L, then cut by the
     -- openings that reach it

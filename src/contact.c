@@ -331,7 +331,18 @@ int bl_contact_detect(bl_model *m, bl_error *err)
         list(msg, sizeof msg, pr.near, pr.nnear < 5 ? pr.nnear : 5, pr.nnear);
     }
     for (int s = 0; s < m->njoints && !msg[0]; s++)
-        if (apply_joint(m, &m->joints[s], err)) goto fail;
+        if (apply_joint(m, &m->joints[s], err)) {
+            /* an interface{} given before, which these contacts do not
+             * have (another tol): say so, with its own message */
+            if (err) {
+                char own[sizeof err->msg];
+                snprintf(own, sizeof own, "%s", err->msg);
+                bl_error_set(err, "contacts: the interface{ %d, %d, ... } given before does not apply "
+                                  "to the contacts found with tol = %g: %s",
+                             m->joints[s].a + 1, m->joints[s].b + 1, tol, own);
+            }
+            goto fail;
+        }
     if (!msg[0]) {
         char *touched = calloc((size_t)n, 1);
         if (!touched) goto oom;

@@ -252,6 +252,9 @@ int bl_polyhedron_check(bl_polyhedron *p, double tol, int id, bl_error *err)
         }
         double area;
         bl_vec3 n = bl_polyhedron_face_normal(p, k, &area);
+        if (isnan(area) || isinf(area))
+            return bl_error_set(err, "block %d: face %d is too large to compute with (its area "
+                                     "overflows); give the model in other units", id, k + 1);
         if (!(area > tol * tol))
             return bl_error_set(err, "block %d: face %d has zero area", id, k + 1);
         bl_vec3 o = {0, 0, 0};

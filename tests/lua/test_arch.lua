@@ -64,4 +64,24 @@ for _, case in ipairs { { math.huge, "ipm" }, { math.huge, "simplex" }, { 100, "
 end
 T.near(heyman[1], heyman[2], 1e-8, "250 voussoirs, mu = inf: the interior point's alpha is the simplex's")
 T.near(heyman[3], heyman[2], 1e-8, "250 voussoirs: mu = 100 gives mu = inf's alpha")
+-- 600 voussoirs at mu = inf by default: no joint dilates, so the answer is
+-- the associative LP's on the interior point's weighted path (verified in
+-- 13 iterations; the sequence's unweighted path left it NOT verified),
+-- equal to the simplex's.
+model { mu = math.huge }
+arch { n = 600, radius = 1, thickness = 0.15 }
+local h600 = solve { progress = false }
+T.ok(h600.verified and h600.lp == "ipm", "600 voussoirs, mu = inf, by default: verified on the interior point",
+     ("%s %s %s"):format(h600.status, tostring(h600.verified), h600.lp))
+T.near(h600.alpha, solve { flow = "associative", lp = "simplex" }.alpha, 1e-8,
+       "600 voussoirs, mu = inf: the simplex's alpha")
+-- 2,000 voussoirs at mu = 0.6, by default: the sequence's associative start
+-- on the unweighted path lost its round-off ("numerical trouble", no
+-- answer); on the weighted one it starts, and no joint slides in the
+-- mechanism, so the certified answer is the associative alpha.
+model { mu = 0.6 }
+arch { n = 2000, radius = 1, thickness = 0.15 }
+local a2k = solve { progress = false }
+T.ok(a2k.certified and a2k.verified, "2,000 voussoirs, mu = 0.6: certified and verified", a2k.status)
+T.near(a2k.alpha, solve { flow = "associative" }.alpha, 1e-7, "2,000 voussoirs, mu = 0.6: the associative alpha")
 T.done()

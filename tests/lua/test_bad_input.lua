@@ -144,4 +144,20 @@ T.eq(tostring(stats()), "0 free blocks, 0 supports, 0 interfaces (2D); size 0, t
 T.ok(current() == empty, "the empty model is still current")
 T.eq(m:contacts(), 1, "m:contacts() without a table")
 T.eq(m:solve().alpha, before, "m:solve() without a table")
+
+-- An interface{} override that the contacts of a new tol do not have: the
+-- message says that it is the override given before (it read as if the
+-- interface{} call had just been made), and the model keeps its contacts.
+model { mu = 0.65 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+interface { 1, 2, mu = 0.3 }
+T.raises(function() contacts { tol = 1 } end, "contacts{ tol } that loses an overridden interface names it",
+         "contacts: the interface{ 1, 2, ... } given before", "tol = 1")
+T.near(solve {}.alpha, 0.3, 1e-9, "after the refused contacts{}: the override still holds (alpha = mu = 0.3)")
+
+-- A box whose faces' areas overflow: said so (it read "face 1 has zero area")
+model { dim = 3 }
+T.raises(function() box { size = { 1e308, 1, 1 } } end, "box{ size = 1e308 }: the overflow named",
+         "box: block 1: face", "too large")
 T.done()

@@ -839,6 +839,11 @@ T.raises(function() bond { length = 6, courses = 2, unit = { 0.4, 0.1 }, pattern
          "bond{ pattern = \"flemish\" } is refused", "bond: field 'pattern'")
 T.raises(function() bond { length = 6, courses = 2, unit = { 0.4, 0.1 }, openings = { { 5, 7, 1, 1 } } } end,
          "bond{} with an opening past its end is refused", "bond: field 'openings' entry 1")
+T.raises(function() bond { length = 6, courses = 2, unit = { 0.4, 0.1 }, openings = { { 1, 2, 2, 5 } } } end,
+         "bond{} with an opening above its top course is refused (it was cut back silently)",
+         "bond: field 'openings' entry 1", "from 1 to 2")
+T.raises(function() bond { length = 6, courses = 2, unit = { 0.4, 0.1 }, openings = { { 1, 2, 0, 1 } } } end,
+         "bond{} with an opening from course 0 is refused", "bond: field 'openings' entry 1", "from 1 to 2")
 
 model {}
 T.raises(function() block { points = cube } end, "points in a 2D model are refused", "block", "3D")

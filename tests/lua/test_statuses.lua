@@ -62,6 +62,19 @@ for _, lp in ipairs { "simplex", "ipm" } do
     if P > 0.5 then T.near(r.alpha_min, (2 * P - 1) / 2, tol, what .. "alpha_min = (2P - 1)/2") end
   end
 
+  -- A 1 x 2 pier pressed down by a dead point load of 1e9 times its weight
+  -- at the middle of its top: it overturns at alpha = (W b/2 + P b/2) / (W h/2)
+  -- (sliding needs mu (W + P) / W, more).  Its forces are 1e9 block weights
+  -- and finite: the interior point took them for a ray ("unbounded").
+  model { mu = 0.65 }
+  block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 2 }, { 0, 2 } } }
+  base(-1, 2)
+  load { dead = { block = 1, at = { 0.5, 2 }, force = { 0, -2e9 } } }
+  r = solve { lp = lp, flow = "associative" }
+  T.ok(r.status == "optimal" and math.abs(r.alpha - (1 + 1e9) / 2) <= 1e-6 * r.alpha,
+       lp .. ": pier under a dead load of 1e9 times its weight: alpha = (W + P) b / (W h), optimal",
+       ("%s %s"):format(r.status, tostring(r.alpha)))
+
   -- A live load pressing the block down can never make it collapse.
   model { mu = 0.65 }
   block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
