@@ -308,10 +308,9 @@ oom:
     return NULL;
 }
 
-void bl_system_fixed_bounds(const bl_system *s, const double *n, const double *C, double *lo,
-                            double *hi)
+void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, double *hi)
 {
-    if (!C) C = s->cohesion;
+    const double *C = s->cohesion;
     for (int j = 0; j < s->ncols; j++) {
         lo[j] = s->lo[j];
         hi[j] = s->hi[j];

@@ -117,10 +117,9 @@ void bl_system_tangent3(const bl_system *s, const double *w, double *dt, double 
  * contact points carry the normal forces n (per point, scaled by W0):
  * R = mu N + C on the shear columns, R = (mu_t / rho) N + C on a twist
  * column, where N is the normal force of the points the column's point
- * leads (its own, or the joint's in the resultant model).  lo and hi have
- * ncols entries. */
-void bl_system_fixed_bounds(const bl_system *s, const double *n, const double *C, double *lo,
-                            double *hi);
+ * leads (its own, or the joint's in the resultant model), and C the
+ * point's cohesion (s->cohesion).  lo and hi have ncols entries. */
+void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, double *hi);
 
 /* For a BL_FRICTION_FIXED system, from the powers w of its columns and
  * the tangential motion (dt, and dt3 in 3D, or NULL) of every point: how

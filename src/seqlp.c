@@ -592,7 +592,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
     int j;
     for (j = ss->done; j < ss->cap; j++) {
         if (!ahead) {
-            bl_system_fixed_bounds(f, r->n, f->cohesion, r->lo, r->hi);
+            bl_system_fixed_bounds(f, r->n, r->lo, r->hi);
             if (!r->lp_fixed) {
                 r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
                 if (!r->lp_fixed) return -1;
@@ -672,7 +672,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
                 /* the certificate on another thread, the next LP here */
                 memcpy(r->yc, y, (size_t)f->nrows * sizeof *r->yc);
                 relax(r, o, j, x, a, prev, &beta, &last, &turns);
-                bl_system_fixed_bounds(f, r->n, f->cohesion, r->lo, r->hi);
+                bl_system_fixed_bounds(f, r->n, r->lo, r->hi);
                 bl_lp_set_bounds(r->lp_fixed, r->lo, r->hi);
                 int two = pthread_create(&other, NULL, certify_beside, &c) == 0;
                 if (!two) certify_beside(&c);

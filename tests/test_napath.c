@@ -112,7 +112,7 @@ static void warm_from_the_path(void **state)
     assert_int_equal(bl_napath_run(s, 1e-3, 1e-3, 1e-3, 100, 0, NULL, 0, x, zl, zu, y, &res, NULL), 0);
     for (size_t k = 0; k < (size_t)s->nforce; k++)
         if (s->col_kind[k] == BL_COL_NORMAL) n[s->col_point[k]] = x[k];
-    bl_system_fixed_bounds(s, n, s->cohesion, lo, hi);
+    bl_system_fixed_bounds(s, n, lo, hi);
     bl_lp_settings set;
     bl_lp_settings_default(&set);
     set.engine = BL_LP_IPM;
