@@ -74,7 +74,10 @@ return function(core)
   local function guard(name, f)
     return function(...)
       if not current then
-        error(name .. ": no current model; start one with model{ mu = 0.65 }", 2)
+        local solid = { box = true, extrude = true, dome = true, facade = true, corner = true, pier = true,
+                        bond = true }
+        error(name .. ": no current model; start one with model{ " .. (solid[name] and "dim = 3, " or "")
+              .. "mu = 0.65 }", 2)
       end
       local m, before = current, core.blocks(current)
       local res = table.pack(pcall(f, ...))

@@ -96,7 +96,15 @@ return function(M)
       end
       if fields.method == "assoc" and fields.flow == nil then fields.flow = "associative" end
       local ok, r = pcall(m.solve, m, fields)
-      if not ok then fail(("methods[%d] (%s): %s"):format(i, label_of(entry), tostring(r))) end
+      if not ok then
+        -- a field given to compare{} itself that solve{} does not know is
+        -- compare{}'s own mistake, not the row's
+        local unknown = tostring(r):match("unknown field '([^']+)'")
+        if unknown and common[unknown] ~= nil and (type(entry) ~= "table" or entry[unknown] == nil) then
+          fail(("unknown field '%s' (compare{} takes 'methods' and the fields of solve{})"):format(unknown))
+        end
+        fail(("methods[%d] (%s): %s"):format(i, label_of(entry), tostring(r)))
+      end
       rows[i] = { label = label_of(entry), result = r }
     end
 

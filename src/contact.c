@@ -60,7 +60,7 @@ static void pair_contacts(bl_model *m, int ia, int ib, double tol, double gap, p
             }
         }
     }
-    if (near_d > 0.0 && !found) {
+    if (near_d > 0.0 && !found && !bl_contact_declared(m, ia, ib)) {
         if (pr->nnear < 5)
             snprintf(pr->near[pr->nnear], sizeof pr->near[0], "blocks %d and %d (gap %.3g)",
                      ia + 1, ib + 1, near_d);
@@ -95,8 +95,37 @@ static int same_pair(const bl_interface *k, int a, int b)
     return (k->a == a && k->b == b) || (k->a == b && k->b == a);
 }
 
-/* A 3D joint declared by hand: its polygon, the normal from a into b (by
- * the centroids), the frame along its first edge, and its area. */
+int bl_contact_declared(const bl_model *m, int a, int b)
+{
+    for (int s = 0; s < m->njoints; s++) {
+        const bl_joint_spec *j = &m->joints[s];
+        if (j->npoints > 0 && ((j->a == a && j->b == b) || (j->a == b && j->b == a))) return 1;
+    }
+    return 0;
+}
+
+/* How well the side of a joint's plane through mid that the unit normal n
+ * points to holds block b, and the other side block a: the depths (inside
+ * positive) of probes a small step either side of mid.  The normal of a
+ * declared joint is the one of the two with the larger score: by the
+ * centroids alone, a cap stone whose downstands reach below its seat got
+ * the normal reversed, and its model was called infeasible. */
+static double side_score(const bl_model *m, int a, int b, bl_vec3 mid, bl_vec3 n)
+{
+    const bl_block *A = &m->blocks[a], *B = &m->blocks[b];
+    if (m->dim == 3) {
+        double step = 1e-4 * fmin(cbrt(A->volume), cbrt(B->volume));
+        return bl_polyhedron_depth(&B->solid, bl_v3_add(mid, bl_v3_scale(n, step))) +
+               bl_polyhedron_depth(&A->solid, bl_v3_sub(mid, bl_v3_scale(n, step)));
+    }
+    double step = 1e-4 * fmin(sqrt(A->area), sqrt(B->area));
+    bl_vec2 q = bl_v2(mid.x, mid.y), d = bl_v2(n.x * step, n.y * step);
+    return bl_polygon_depth(B->v, B->nv, bl_v2_add(q, d)) + bl_polygon_depth(A->v, A->nv, bl_v2_sub(q, d));
+}
+
+/* A 3D joint declared by hand: its polygon, the normal from a into b (the
+ * side that holds b, side_score), the frame along its first edge, and its
+ * area. */
 static int add_joint3(bl_model *m, const bl_joint_spec *s, bl_error *err)
 {
     bl_interface k = {0};
@@ -111,8 +140,10 @@ static int add_joint3(bl_model *m, const bl_joint_spec *s, bl_error *err)
         n = bl_v3_add(n, bl_v3_cross(bl_v3_sub(k.poly[i], k.poly[0]), bl_v3_sub(k.poly[i + 1], k.poly[0])));
     k.area3 = 0.5 * bl_v3_norm(n);
     k.n3 = bl_v3_scale(n, 0.5 / k.area3);
-    bl_vec3 ab = bl_v3_sub(m->blocks[s->b].centroid3, m->blocks[s->a].centroid3);
-    if (bl_v3_dot(k.n3, ab) < 0.0) k.n3 = bl_v3_scale(k.n3, -1.0);
+    bl_vec3 mid = {0, 0, 0};
+    for (int i = 0; i < k.np; i++) mid = bl_v3_add(mid, bl_v3_scale(k.poly[i], 1.0 / k.np));
+    if (side_score(m, s->a, s->b, mid, bl_v3_scale(k.n3, -1.0)) > side_score(m, s->a, s->b, mid, k.n3))
+        k.n3 = bl_v3_scale(k.n3, -1.0);
     bl_vec3 e = bl_v3_sub(k.poly[1], k.poly[0]);
     k.t2 = bl_v3_scale(e, 1.0 / bl_v3_norm(e));
     k.t3 = bl_v3_cross(k.n3, k.t2);
@@ -146,8 +177,10 @@ static int apply_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
         k.p[0] = s->p[0];
         k.p[1] = s->p[1];
         k.normal = bl_v2(-d.y / len, d.x / len);
-        bl_vec2 ab = bl_v2_sub(m->blocks[s->b].centroid, m->blocks[s->a].centroid);
-        if (bl_v2_dot(k.normal, ab) < 0.0) k.normal = bl_v2_scale(k.normal, -1.0);
+        bl_vec3 mid = {0.5 * (s->p[0].x + s->p[1].x), 0.5 * (s->p[0].y + s->p[1].y), 0.0};
+        bl_vec3 nu = {k.normal.x, k.normal.y, 0.0};
+        if (side_score(m, s->a, s->b, mid, bl_v3_scale(nu, -1.0)) > side_score(m, s->a, s->b, mid, nu))
+            k.normal = bl_v2_scale(k.normal, -1.0);
         k.mu = s->has_mu ? s->mu : m->mu;
         k.cohesion = s->has_cohesion ? s->cohesion : m->cohesion;
         k.manual = 1;
@@ -173,6 +206,12 @@ static int apply_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
     return 0;
 }
 
+/* The depth of q in block B (inside positive; 2D: q's x, y). */
+static double depth_at(const bl_block *B, int dim, bl_vec3 q)
+{
+    return dim == 3 ? bl_polyhedron_depth(&B->solid, q) : bl_polygon_depth(B->v, B->nv, bl_v2(q.x, q.y));
+}
+
 int bl_joint_check(const bl_model *m, const bl_joint_spec *s, bl_error *err)
 {
     if (s->npoints == 0) return 0;
@@ -186,11 +225,36 @@ int bl_joint_check(const bl_model *m, const bl_joint_spec *s, bl_error *err)
     bl_vec2 mid = bl_v2_scale(bl_v2_add(s->p[0], s->p[1]), 0.5);
     bl_vec3 mean = {0, 0, 0};
     for (int i = 0; i < n && m->dim == 3; i++) mean = bl_v3_add(mean, bl_v3_scale(s->p3[i], 1.0 / n));
+    /* the joint's unit normal (either way) */
+    bl_vec3 nu = {0, 0, 0};
+    if (m->dim == 3) {
+        for (int i = 1; i + 1 < n; i++)
+            nu = bl_v3_add(nu, bl_v3_cross(bl_v3_sub(s->p3[i], s->p3[0]), bl_v3_sub(s->p3[i + 1], s->p3[0])));
+    } else {
+        nu = bl_v3(s->p[0].y - s->p[1].y, s->p[1].x - s->p[0].x, 0.0);
+    }
+    nu = bl_v3_scale(nu, 1.0 / bl_v3_norm(nu));
     /* every point, then the middle (a joint cut across a block) */
     for (int i = 0; i <= n; i++)
         for (int j = 0; j < 2; j++) {
-            double d = m->dim == 3 ? bl_polyhedron_depth(&blk[j]->solid, i < n ? s->p3[i] : mean)
-                                   : bl_polygon_depth(blk[j]->v, blk[j]->nv, i < n ? s->p[i] : mid);
+            bl_vec3 q = m->dim == 3 ? (i < n ? s->p3[i] : mean)
+                                    : (i < n ? bl_v3(s->p[i].x, s->p[i].y, 0.0) : bl_v3(mid.x, mid.y, 0.0));
+            double d = depth_at(blk[j], m->dim, q);
+            if (i < n && d < -tol) {
+                /* outside the block: across the joint (a gap) is allowed,
+                 * along it (past the block's edge, a capacity it does not
+                 * have: 1.18 for a unit block rocking at 1 on a joint 0.09
+                 * wider each side) is not */
+                double back = fmax(depth_at(blk[j], m->dim, bl_v3_add(q, bl_v3_scale(nu, -d))),
+                                   depth_at(blk[j], m->dim, bl_v3_sub(q, bl_v3_scale(nu, -d))));
+                if (back < -fmax(tol, 1e-3 * -d))
+                    return bl_error_set(err,
+                                        "interface: point %d of field 'points' lies %.3g beyond the "
+                                        "%s of block %d, along the joint; a declared joint must not "
+                                        "be wider than the blocks it joins",
+                                        i + 1, -d, m->dim == 3 ? "faces" : "edges",
+                                        (j ? s->b : s->a) + 1);
+            }
             if (fabs(d) <= far) continue;
             char what[48];
             if (i < n) snprintf(what, sizeof what, "point %d of field 'points'", i + 1);

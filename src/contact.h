@@ -21,8 +21,10 @@ void bl_contact_tolerances(const bl_model *m, double *tol, double *gap);
 /* Checks a joint declared by hand (s->npoints > 0): each of its points,
  * and its middle, must lie within BL_JOINT_REACH of the smaller block's
  * size (its square or cube root of area or volume), or within the near-miss
- * gap if that is larger, of the boundary of both blocks.  Returns 0, or -1
- * with a message naming the point, the block and the distance. */
+ * gap if that is larger, of the boundary of both blocks, and no point may
+ * lie past a block along the joint (outside by more than tol, and still
+ * outside when moved that far across it).  Returns 0, or -1 with a message
+ * naming the point, the block and the distance. */
 #define BL_JOINT_REACH 0.1
 int bl_joint_check(const bl_model *m, const bl_joint_spec *s, bl_error *err);
 

@@ -207,7 +207,7 @@ static int pair3(bl_model *m, int ia, int ib, double tol, double gap, bl_contact
             }
         }
     }
-    if (near_d > 0.0 && !found) {
+    if (near_d > 0.0 && !found && !bl_contact_declared(m, ia, ib)) {
         if (pr->nnear < 5)
             snprintf(pr->near[pr->nnear], sizeof pr->near[0], "blocks %d and %d (gap %.3g)",
                      ia + 1, ib + 1, near_d);

@@ -18,4 +18,8 @@ typedef struct bl_contact_problems {
 int bl_contact_pairs3(bl_model *m, double tol, double gap, bl_contact_problems *pr,
                       bl_error *err);
 
+/* Whether a joint was declared by hand (interface{ points }) between
+ * blocks a and b: their gap is then no near-miss. */
+int bl_contact_declared(const bl_model *m, int a, int b);
+
 #endif

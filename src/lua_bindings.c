@@ -1188,7 +1188,9 @@ static int model_solve(lua_State *L)
         mo.iterations = (int)iters; /* Ipopt's cap; the start's LP keeps its own */
         o.iterations = 0;
     }
-    if (m->nblocks == 0) fail(L, "solve: the model has no blocks; add them with block{}, wall{} or arch{}");
+    if (m->nblocks == 0)
+        fail(L, "solve: the model has no blocks; add them with %s",
+             m->dim == 3 ? "box{}, extrude{}, wall{ depth }, dome{} or facade{}" : "block{}, wall{} or arch{}");
 
     bl_solution **box = lua_newuserdatauv(L, sizeof *box, 0);
     *box = NULL;
@@ -1219,6 +1221,9 @@ static int model_solve(lua_State *L)
     /* A sequence stopped by Ctrl-C still stops the chunk, but what it found
      * is kept for last(). */
     if (s->interrupted) {
+        if (strcmp(s->method, "mpec") == 0)
+            return fail(L, "solve: interrupted (Ctrl-C) in Ipopt; its start's verified alpha, %.6g, "
+                           "is in last()", s->alpha);
         if (s->certified)
             return fail(L, "solve: interrupted (Ctrl-C) after %d LPs; the lowest certified alpha "
                            "so far, %.6g, is in last()", s->lps, s->alpha);

@@ -804,16 +804,18 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
         s->kept_start = 1;
         if (s->verified) bl_solution_answer_status(s);
         else s->status = BL_NOT_COMPLEMENTARY;
-    } else if (v0 && !converged && s->status != BL_INTERRUPTED) {
-        /* Ipopt stopped short (a limit, numerical trouble): a start that
+    } else if (v0 && !converged) {
+        /* Ipopt stopped short (a limit, Ctrl-C, numerical trouble): a start that
          * is itself a verified answer stands (Ipopt's word says why it did
          * not improve on it); else no answer, and the status says why
          * (Ipopt's last point stays in alpha_ipopt) */
         bl_status why = s->status;
         answer_from(s, v0, &l, c, f, nonassoc, o, xa);
         s->kept_start = s->verified;
-        if (s->verified) bl_solution_answer_status(s);
-        else {
+        if (s->verified) {
+            bl_solution_answer_status(s);
+            s->interrupted = why == BL_INTERRUPTED; /* Ctrl-C: kept for last() */
+        } else {
             s->status = why;
             answer_from(s, v, &l, c, f, nonassoc, o, xa);
             s->verified = 0;

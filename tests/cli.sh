@@ -38,6 +38,11 @@ LUA
 out=$("$bin" -e "dofile('$tmp/w.lua')" -e 'print(stats().blocks)')
 check "-e runs in order and shares state" test "$out" = 11
 
+# before any model: a 3D generator asks for a 3D model (it asked for the
+# 2D model{ mu = 0.65 }, which it then refused)
+"$bin" -e 'box { size = { 1, 1, 1 } }' 2>"$tmp/err"
+check "box{} before any model asks for model{ dim = 3, ... }" grep -q "start one with model{ dim = 3" "$tmp/err"
+
 LUA_CPATH="$build/?.so" "$lua" -e '
   local bl = require "blocklim"
   bl.model { mu = 0.65 }

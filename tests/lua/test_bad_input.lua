@@ -54,7 +54,7 @@ local bad = {
   { "interface", function() interface { 1, 3, mu = 0.2 } end, "interface",
     "blocks 1 and 3 share no interface" },
   { "interface", function() interface { 1, 2, points = { { -0.5, 0 }, { 1, 0 } } } end,
-    "interface", "point 1 of field 'points' lies 0.5 outside block 1", "edges of both blocks" },
+    "interface", "point 1 of field 'points' lies 0.5 beyond the edges of block 1", "wider than the blocks" },
   { "interface", function() interface { 1, 2, points = { { 0, 0.5 }, { 1, 0.5 } } } end,
     "interface", "point 1 of field 'points' lies 0.5 outside block 2" },
   { "interface", function() interface { 1, 2, points = { { 0, 5 }, { 1, 5 } } } end,
@@ -110,6 +110,7 @@ local bad = {
   { "arch", function() arch { n = 5, radius = 1, thickness = 0.1, density = -1 } end, "arch", "'density'" },
   { "compare", function() compare { methods = { { method = "assoc", label = 5 } } } end, "compare",
     "'label'", "string" },
+  { "compare", function() compare { bogus = 1 } end, "compare: unknown field 'bogus'", "'methods'" },
   { "arch", function() arch { n = 5, thickness = 0.1 } end, "arch", "'radius'" },
   { "arch", function() arch { n = 5, radius = 1, thickness = -0.1 } end, "arch", "'thickness'" },
 }

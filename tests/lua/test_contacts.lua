@@ -77,4 +77,65 @@ T.raises(function() solve {} end, "overlap reported before the solve", "overlapp
 model {}
 rect(0, 0, 1, 1); rect(-1, -1, 2, 0, true); rect(5, 5, 6, 6)
 T.raises(function() stats() end, "a floating block is reported", "no interface", "block 3")
+
+-- A joint declared across a near-miss (a unit block 0.001 above its base,
+-- seated on the middle half): the declaration is what the near-miss asks
+-- for, so it clears it, and the block rocks about x = 0.75 at
+-- alpha = (0.75 - 0.5) / 0.501.
+model { mu = 0.6 }
+rect(0, 0.001, 1, 1.001); rect(-1, -1, 2, 0, true)
+T.raises(function() contacts {} end, "a near-miss before any declaration", "near-miss")
+interface { 1, 2, points = { { 0.25, 0 }, { 0.75, 0 } } }
+T.near(solve {}.alpha, 0.25 / 0.501, 1e-9, "a joint declared across a near-miss: no error, alpha = 0.25 / 0.501")
+
+-- A declared joint wider than its block, even by less than the reach
+-- allowed across it, is refused: 0.09 past a unit block's corners it was
+-- accepted and gave alpha = 1.18 for a block that rocks at b/h = 1.  A gap
+-- across the joint is still allowed.
+model { mu = 5 }
+rect(0, 0, 1, 1); rect(-1, -1, 2, 0, true)
+T.raises(function() interface { 1, 2, points = { { -0.09, 0 }, { 1.09, 0 } } } end,
+         "a 2D joint past the block's corners is refused", "point 1 of field 'points' lies 0.09 beyond", "block 1")
+interface { 1, 2, points = { { 0, 0 }, { 1, 0 } } }
+T.near(solve {}.alpha, 1, 1e-9, "the joint as wide as the block: alpha = b/h = 1")
+model { dim = 3, mu = 5 }
+box { size = { 4, 4, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 1 } }
+T.raises(function()
+  interface { 2, 1, points = { { -0.57, -0.57, 0 }, { 0.57, -0.57, 0 }, { 0.57, 0.57, 0 }, { -0.57, 0.57, 0 } } }
+end, "a 3D joint past the box's edges is refused", "beyond the faces of block 2")
+model { mu = 5 }
+rect(0, 0.001, 1, 1.001); rect(-1, -1, 2, 0, true)
+interface { 1, 2, points = { { 0, 0 }, { 1, 0 } } }
+T.near(solve {}.alpha, 0.5 / 0.501, 1e-9, "a joint declared across a gap of 0.001 is allowed: alpha = 0.5 / 0.501")
+
+-- A declared joint's normal points from a into b by the sides the blocks
+-- lie on, not by their centroids: a cap stone whose downstands reach below
+-- its seat on a pedestal (its centroid below the joint) rocks at the
+-- detected joint's alpha whichever way the pair is named; by the
+-- centroids the normal was reversed and the model "infeasible".
+for dim = 2, 3 do
+  local alphas = {}
+  for order = 0, 2 do
+    model { dim = dim, mu = 0.6 }
+    local ped, cap, pts
+    local P = { { -0.25, 0.6 }, { 0.25, 0.6 }, { 0.25, 1 }, { -0.25, 1 } }
+    local C = { { -1, -0.8 }, { -0.6, -0.8 }, { -0.6, 1 }, { 0.6, 1 }, { 0.6, -0.8 }, { 1, -0.8 }, { 1, 1.2 }, { -1, 1.2 } }
+    if dim == 2 then
+      ped, cap = block { vertices = P, support = true }, block { vertices = C }
+      pts = { { -0.25, 1 }, { 0.25, 1 } }
+    else
+      ped = extrude { polygon = P, axis = "y", from = -0.5, to = 0.5, support = true }
+      cap = extrude { polygon = C, axis = "y", from = -0.5, to = 0.5 }
+      pts = { { -0.25, -0.5, 1 }, { 0.25, -0.5, 1 }, { 0.25, 0.5, 1 }, { -0.25, 0.5, 1 } }
+    end
+    if order == 1 then interface { ped, cap, points = pts } end
+    if order == 2 then interface { cap, ped, points = pts } end
+    local r = solve { flow = "associative" }
+    alphas[order] = r.status == "optimal" and r.alpha or 0 / 0
+  end
+  T.ok(math.abs(alphas[1] - alphas[0]) <= 1e-9 and math.abs(alphas[2] - alphas[0]) <= 1e-9,
+       ("%dD cap stone on a pedestal: the declared joint, named either way, gives the detected alpha"):format(dim),
+       ("%s, %s, %s"):format(tostring(alphas[0]), tostring(alphas[1]), tostring(alphas[2])))
+end
 T.done()

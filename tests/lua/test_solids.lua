@@ -411,11 +411,12 @@ end
 -- a declared polygon must lie on both blocks' faces: one 3 x 3 under the
 -- cube of side 1 reaches sqrt(2) past its corners, one at z = 5 floats
 for _, case in ipairs {
-  { { { -1.5, -1.5, 0 }, { 1.5, -1.5, 0 }, { 1.5, 1.5, 0 }, { -1.5, 1.5, 0 } }, "1.41 outside block 2" },
-  { { { -0.25, -0.25, 5 }, { 0.25, -0.25, 5 }, { 0.25, 0.25, 5 } }, "5 outside block 1" },
+  { { { -1.5, -1.5, 0 }, { 1.5, -1.5, 0 }, { 1.5, 1.5, 0 }, { -1.5, 1.5, 0 } }, "1.41 beyond the faces of block 2",
+    "wider than the blocks" },
+  { { { -0.25, -0.25, 5 }, { 0.25, -0.25, 5 }, { 0.25, 0.25, 5 } }, "5 outside block 1", "within 0.1" },
 } do
   T.raises(function() interface { 1, 2, points = case[1] } end, "3D joint by hand off the blocks: " .. case[2],
-           "interface: point 1 of field 'points' lies " .. case[2], "within 0.1")
+           "interface: point 1 of field 'points' lies " .. case[2], case[3])
 end
 T.near(solve { flow = "associative" }.alpha, 0.5, 1e-8, "3D joints refused: the model is as it was")
 T.raises(function() load { live = { block = 2, at = { 9, 9, 9 }, force = { 1, 0, 0 } } } end,
