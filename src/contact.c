@@ -104,6 +104,12 @@ int bl_contact_declared(const bl_model *m, int a, int b)
     return 0;
 }
 
+/* The depth of q in block B (inside positive; 2D: q's x, y). */
+static double depth_at(const bl_block *B, int dim, bl_vec3 q)
+{
+    return dim == 3 ? bl_polyhedron_depth(&B->solid, q) : bl_polygon_depth(B->v, B->nv, bl_v2(q.x, q.y));
+}
+
 /* How well the side of a joint's plane through mid that the unit normal n
  * points to holds block b, and the other side block a: the depths (inside
  * positive) of probes a small step either side of mid.  The normal of a
@@ -113,14 +119,9 @@ int bl_contact_declared(const bl_model *m, int a, int b)
 static double side_score(const bl_model *m, int a, int b, bl_vec3 mid, bl_vec3 n)
 {
     const bl_block *A = &m->blocks[a], *B = &m->blocks[b];
-    if (m->dim == 3) {
-        double step = 1e-4 * fmin(cbrt(A->volume), cbrt(B->volume));
-        return bl_polyhedron_depth(&B->solid, bl_v3_add(mid, bl_v3_scale(n, step))) +
-               bl_polyhedron_depth(&A->solid, bl_v3_sub(mid, bl_v3_scale(n, step)));
-    }
-    double step = 1e-4 * fmin(sqrt(A->area), sqrt(B->area));
-    bl_vec2 q = bl_v2(mid.x, mid.y), d = bl_v2(n.x * step, n.y * step);
-    return bl_polygon_depth(B->v, B->nv, bl_v2_add(q, d)) + bl_polygon_depth(A->v, A->nv, bl_v2_sub(q, d));
+    double size = m->dim == 3 ? fmin(cbrt(A->volume), cbrt(B->volume)) : fmin(sqrt(A->area), sqrt(B->area));
+    bl_vec3 step = bl_v3_scale(n, 1e-4 * size);
+    return depth_at(B, m->dim, bl_v3_add(mid, step)) + depth_at(A, m->dim, bl_v3_sub(mid, step));
 }
 
 /* A 3D joint declared by hand: its polygon, the normal from a into b (the
@@ -204,12 +205,6 @@ static int apply_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
                             m->dim == 3 ? "{{x1, y1, z1}, {x2, y2, z2}, {x3, y3, z3}, ...}"
                                         : "{{x1, y1}, {x2, y2}}");
     return 0;
-}
-
-/* The depth of q in block B (inside positive; 2D: q's x, y). */
-static double depth_at(const bl_block *B, int dim, bl_vec3 q)
-{
-    return dim == 3 ? bl_polyhedron_depth(&B->solid, q) : bl_polygon_depth(B->v, B->nv, bl_v2(q.x, q.y));
 }
 
 int bl_joint_check(const bl_model *m, const bl_joint_spec *s, bl_error *err)
