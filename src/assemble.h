@@ -128,6 +128,11 @@ void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, dou
 void bl_system_speed(const bl_system *s, const double *w, const double *dt, const double *dt3,
                      double *speed);
 
+/* The torsion per unit normal force of a 3D interface in the resultant
+ * model: its own mu_t, else mu times its torsion lever (the mean distance
+ * of its area from its centroid); infinite where it cannot slide. */
+double bl_interface_torsion(const bl_interface *in);
+
 void bl_system_free(bl_system *s);
 
 /* For the builders (2D in assemble.c, 3D in assemble3.c): a system with

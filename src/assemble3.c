@@ -180,6 +180,14 @@ static double torsion_lever(const bl_interface *in, bl_vec3 *centroid)
     return sum / area;
 }
 
+double bl_interface_torsion(const bl_interface *in)
+{
+    if (isinf(in->mu)) return INFINITY;
+    if (in->mu_t > 0.0) return in->mu_t;
+    bl_vec3 c;
+    return in->mu * torsion_lever(in, &c);
+}
+
 /* a x b, with the components below their own round-off set to zero (as in
  * 2D: a force through the centroid must have no moment at all). */
 static bl_vec3 moment(bl_vec3 a, bl_vec3 b)

@@ -785,6 +785,7 @@ static void push_interface(lua_State *L, const bl_model *m, const bl_interface *
     else push_point(L, in->normal);
     lua_setfield(L, -2, "normal");
     if (m->dim == 3) set_string(L, "model", in->imodel == BL_RESULTANT ? "resultant" : "vertex");
+    if (m->dim == 3 && in->imodel == BL_RESULTANT) set_number(L, "mu_t", bl_interface_torsion(in));
 }
 
 /* model:interface_info(k) -> { a, b, normal, points, mu, cohesion, area } of

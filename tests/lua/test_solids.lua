@@ -522,6 +522,13 @@ T.near(torque { interface = "resultant", mu_t = 0.1 }, 0.1 * 2, 1e-9,
        "resultant model with mu_t = 0.1: torque capacity mu_t N")
 T.near(torque {} / torque { interface = "resultant" }, 1 / math.sqrt(2) / lever, 1e-9,
        "the vertex model's torsion is 1.848 times the uniform pressure's")
+-- the mu_t each resultant joint takes is shown (it could not be checked)
+model { dim = 3, mu = 0.6, interface = "resultant" }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 1 } }
+T.near(current():interface_info(1).mu_t, 0.6 * lever, 1e-12, "interface_info: the default mu_t, mu times 0.38260")
+interface { 1, 2, mu_t = 0.1 }
+T.eq(solve { flow = "associative" }.interfaces[1].mu_t, 0.1, "r.interfaces: an overridden mu_t")
 for _, flow in ipairs { "associative", "nonassociative" } do
   T.near(torque({ interface = "resultant", cohesion = 0.5 }, flow), (0.6 * 2 + 0.5 * 1) * lever, 1e-7,
          "resultant model with cohesion c = 0.5, pure torque, " .. flow .. ": (mu N + c A) times the mean distance")
