@@ -503,6 +503,21 @@ static int joint_pieces(const pic *P, int i, const int *face_off, const double *
     return n;
 }
 
+/* Face k of block b as moved: the mean of its corners in *c and twice its
+ * area along its normal in *nrm (outward). */
+static void face_plane(const pic *P, int b, int k, bl_vec3 *c, bl_vec3 *nrm)
+{
+    const bl_polyhedron *S = &P->m->blocks[b].solid;
+    int a0 = S->fs[k], len = S->fs[k + 1] - a0;
+    *c = *nrm = (bl_vec3){0, 0, 0};
+    for (int i = 0; i < len; i++) {
+        bl_vec3 p = moved3(P, b, S->v[S->fi[a0 + i]]);
+        bl_vec3 q = moved3(P, b, S->v[S->fi[a0 + (i + 1) % len]]);
+        *c = bl_v3_add(*c, bl_v3_scale(p, 1.0 / len));
+        *nrm = bl_v3_add(*nrm, bl_v3_cross(p, q));
+    }
+}
+
 /* Where the face of F[u] lies against the plane nrm . x = d0: 1 wholly in
  * front of it (towards the viewer, or on it), -1 wholly behind, 0 across. */
 static int face_side(const pic *P, const face3 *u, bl_vec3 nrm, double d0, double tol)
@@ -528,18 +543,11 @@ static void support_keys(const pic *P, face3 *F, int n, const int *face_off, dou
 {
     const bl_model *m = P->m;
     for (int t = 0; t < n; t++) {
-        const bl_block *B = &m->blocks[F[t].block];
-        if (!B->support) continue;
-        const bl_polyhedron *S = &B->solid;
-        int a0 = S->fs[F[t].face], len = S->fs[F[t].face + 1] - a0;
-        bl_vec3 c = {0, 0, 0}, nrm = {0, 0, 0};
-        for (int i = 0; i < len; i++) {
-            bl_vec3 p = S->v[S->fi[a0 + i]], q = S->v[S->fi[a0 + (i + 1) % len]];
-            c = bl_v3_add(c, p);
-            nrm = bl_v3_add(nrm, bl_v3_cross(p, q));
-        }
+        if (!m->blocks[F[t].block].support) continue;
+        bl_vec3 c, nrm;
+        face_plane(P, F[t].block, F[t].face, &c, &nrm);
         nrm = bl_v3_scale(nrm, 1.0 / bl_v3_norm(nrm)); /* towards the viewer: the face is shown */
-        double d0 = bl_v3_dot(nrm, c) / len, tol = 1e-9 * (1.0 + fabs(d0));
+        double d0 = bl_v3_dot(nrm, c), tol = 1e-9 * (1.0 + fabs(d0));
         double behind = -INFINITY, front = INFINITY;
         for (int u = 0; u < n; u++) {
             if (m->blocks[F[u].block].support) continue;
@@ -582,20 +590,13 @@ static void draw3(cairo_t *cr, const pic *P)
     for (int b = 0; b < m->nblocks; b++) {
         const bl_polyhedron *S = &m->blocks[b].solid;
         for (int k = 0; k < S->nf; k++) {
-            /* the face as moved: its normal from three of its corners */
-            int a0 = S->fs[k], len = S->fs[k + 1] - a0;
-            bl_vec3 c = {0, 0, 0}, nrm = {0, 0, 0};
-            for (int i = 0; i < len; i++) {
-                bl_vec3 p = moved3(P, b, S->v[S->fi[a0 + i]]);
-                bl_vec3 q = moved3(P, b, S->v[S->fi[a0 + (i + 1) % len]]);
-                c = bl_v3_add(c, p);
-                nrm = bl_v3_add(nrm, bl_v3_cross(p, q));
-            }
+            bl_vec3 c, nrm;
+            face_plane(P, b, k, &c, &nrm);
             double nn = bl_v3_norm(nrm);
             depth[face_off[b] + k] = NAN;
             if (!(nn > 0.0) || bl_v3_dot(nrm, P->eye) <= 0.0) continue;
             nrm = bl_v3_scale(nrm, 1.0 / nn);
-            depth[face_off[b] + k] = bl_v3_dot(c, P->eye) / len;
+            depth[face_off[b] + k] = bl_v3_dot(c, P->eye);
             F[n++] = (face3){b, k, depth[face_off[b] + k], fabs(bl_v3_dot(nrm, light))};
         }
     }

@@ -696,36 +696,23 @@ typedef struct best_point {
     double *x, *z, *s, *w, *y, a, gap; /* x, z, s, w: n entries; y: m */
 } best_point;
 
-static void best_keep(ipm *p, best_point *b, double gap)
+/* Copies the iterate into b (keep 1, allocating it the first time) or
+ * back from it (keep 0). */
+static void best_copy(ipm *p, best_point *b, int keep)
 {
     size_t n = (size_t)p->n, m = (size_t)p->m;
-    if (!b->x) {
+    if (keep && !b->x) {
         b->x = malloc((4 * n + m + 1) * sizeof *b->x);
         if (!b->x) return;
         b->z = b->x + n, b->s = b->z + n, b->w = b->s + n, b->y = b->w + n;
     }
-    memcpy(b->x, p->x, n * sizeof *b->x);
-    memcpy(b->z, p->z, n * sizeof *b->z);
-    if (p->s) { /* the pairs of the upper bounds, where some column is boxed */
-        memcpy(b->s, p->s, n * sizeof *b->s);
-        memcpy(b->w, p->w, n * sizeof *b->w);
-    }
-    memcpy(b->y, p->y, m * sizeof *b->y);
-    b->a = p->a;
-    b->gap = gap;
-}
-
-static void best_restore(ipm *p, const best_point *b)
-{
-    size_t n = (size_t)p->n, m = (size_t)p->m;
-    memcpy(p->x, b->x, n * sizeof *b->x);
-    memcpy(p->z, b->z, n * sizeof *b->z);
-    if (p->s) {
-        memcpy(p->s, b->s, n * sizeof *b->s);
-        memcpy(p->w, b->w, n * sizeof *b->w);
-    }
-    memcpy(p->y, b->y, m * sizeof *b->y);
-    p->a = b->a;
+    /* the pairs of the upper bounds (s, w) exist where some column is boxed */
+    double *it[] = {p->x, p->z, p->s, p->w, p->y}, *kept[] = {b->x, b->z, b->s, b->w, b->y};
+    size_t len[] = {n, n, n, n, m};
+    for (int k = 0; k < 5; k++)
+        if (it[k]) memcpy(keep ? kept[k] : it[k], keep ? it[k] : kept[k], len[k] * sizeof(double));
+    if (keep) b->a = p->a;
+    else p->a = b->a;
 }
 
 static bl_lp_status solve(void *e)
@@ -799,8 +786,10 @@ static bl_lp_status solve(void *e)
             status = BL_LP_OPTIMAL;
             break;
         }
-        if (ep <= tol && eu <= tol && ed <= tol && eg <= NEAR_GAP * tol && eg < best.gap)
-            best_keep(p, &best, eg);
+        if (ep <= tol && eu <= tol && ed <= tol && eg <= NEAR_GAP * tol && eg < best.gap) {
+            best_copy(p, &best, 1);
+            if (best.x) best.gap = eg;
+        }
         /* A warm start that does not take: its largest residual not halved
          * (nor within the tolerance) in WARM_PATIENCE iterations.  The
          * solve starts again from Mehrotra's point.  A certificate of the
@@ -1060,7 +1049,7 @@ static bl_lp_status solve(void *e)
         p->iterations = it + 1;
     }
     if (status == BL_LP_FAILED && best.x) {
-        best_restore(p, &best);
+        best_copy(p, &best, 0);
         status = BL_LP_OPTIMAL;
         if (p->set.verbose)
             fprintf(stderr, "ipm: the iterates lost their feasibility: the best one, gap %.1e\n", best.gap);
