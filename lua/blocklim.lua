@@ -71,6 +71,7 @@ return function(core)
   -- wall, or Ctrl-C) is raised again at the user's call: without this
   -- module's file and line, and starting with the command's name; the
   -- blocks it had made are removed, so the model is as it was.
+  local commands = { block = true, model = true, contacts = true, interface = true, load = true }
   local function guard(name, f)
     return function(...)
       if not current then
@@ -86,12 +87,23 @@ return function(core)
       local msg = res[2]
       if type(msg) ~= "string" then error(msg, 0) end
       msg = msg:gsub("^%[blocklim [%w_]+%.lua%]:%d+: ", "")
+      -- a field the user gave this command, refused by a command it
+      -- passed it on to (pier's density, by box, by block): the user's
+      -- command names it, alone
+      local rest, t = msg, ...
+      repeat
+        local cmd, after = rest:match("^(%a+): (.*)$")
+        if commands[cmd] then rest = after end
+      until not commands[cmd]
+      local f = rest:match("^field '([%w_]+)'")
+      if f and type(t) == "table" and t[f] ~= nil then msg = rest end
       if msg:sub(1, #name + 1) ~= name .. ":" then msg = name .. ": " .. msg end
       error(msg, 2)
     end
   end
   for _, name in ipairs { "wall", "arch", "compare", "box", "extrude", "dome", "facade", "corner",
                           "pier", "bond" } do
+    commands[name] = true
     M[name] = guard(name, M[name])
   end
 

@@ -180,12 +180,17 @@ static double torsion_lever(const bl_interface *in, bl_vec3 *centroid)
     return sum / area;
 }
 
+/* A resultant joint's torsion coefficient: its own mu_t, else mu times
+ * its torsion lever (no friction, none). */
+static double joint_mu_t(const bl_interface *in, double lever)
+{
+    return in->mu_t > 0.0 ? in->mu_t : (isfinite(in->mu) ? in->mu : 0.0) * lever;
+}
+
 double bl_interface_torsion(const bl_interface *in)
 {
-    if (isinf(in->mu)) return INFINITY;
-    if (in->mu_t > 0.0) return in->mu_t;
     bl_vec3 c;
-    return in->mu * torsion_lever(in, &c);
+    return isinf(in->mu) ? INFINITY : joint_mu_t(in, torsion_lever(in, &c));
 }
 
 /* a x b, with the components below their own round-off set to zero (as in
@@ -239,7 +244,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
         double mut = 0.0, lever = 0.0;
         if (resultant) {
             lever = torsion_lever(in, &cen);
-            mut = in->mu_t > 0.0 ? in->mu_t : (isfinite(in->mu) ? in->mu : 0.0) * lever;
+            mut = joint_mu_t(in, lever);
         }
         /* the fixed form: a normal and the pyramid section's shears at
          * every point that can slide, a normal and two free shears where

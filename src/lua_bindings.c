@@ -545,6 +545,11 @@ static int model_interface(lua_State *L)
         double tol, gap, area;
         bl_vec3 nrm;
         bl_contact_tolerances(m, &tol, &gap);
+        for (int i = 1; i < n; i++)
+            for (int j = 0; j < i; j++)
+                if (bl_v3_norm(bl_v3_sub(s.p3[i], s.p3[j])) <= tol)
+                    return fail(L, "interface: field 'points' point %d repeats point %d (within tol = %.3g); "
+                                   "give each corner once", i + 1, j + 1, tol);
         int r = bl_polygon3_check(s.p3, n, tol, &nrm, &area);
         if (r == -1) return fail(L, "interface: field 'points' encloses no area (on a line?)");
         if (r == -2) return fail(L, "interface: field 'points' is not a convex polygon in order");

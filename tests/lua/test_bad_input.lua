@@ -161,4 +161,28 @@ T.near(solve {}.alpha, 0.3, 1e-9, "after the refused contacts{}: the override st
 model { dim = 3 }
 T.raises(function() box { size = { 1e308, 1, 1 } } end, "box{ size = 1e308 }: the overflow named",
          "box: block 1: face", "too large")
+-- A generator's own field, refused by the command it passes it on to: the
+-- message names the user's command alone (it read "pier: box: block: field
+-- 'density' ..."); a field the generator made itself keeps the chain.
+local function message(f)
+  local ok, e = pcall(f)
+  return ok and "no error" or (tostring(e):gsub("^.-:%d+: ", ""))
+end
+T.eq(message(function() pier { size = { 1, 1 }, courses = 2, height = 0.5, density = -1 } end),
+     "pier: field 'density' must be > 0, got -1", "pier{ density = -1 }: pier names its field")
+T.eq(message(function() wall { courses = { { 1, 1 } }, depth = 0.2, density = "heavy" } end),
+     "wall: field 'density' must be a number, got string", "3D wall{ density = 'heavy' }: wall names its field")
+model {}
+T.eq(message(function() arch { span = 2, thickness = 0.2, n = 5, density = -1 } end),
+     "arch: field 'density' must be > 0, got -1", "arch{ density = -1 }: arch names its field")
+-- A declared 3D joint that gives a corner twice (it was accepted): refused,
+-- naming both points, and the detected joint stays (alpha = mu: sliding).
+model { dim = 3, mu = 0.6 }
+local cube = box { size = { 1, 1, 1 } }
+local slab = box { size = { 2, 2, 1 }, at = { 0, 0, -1 }, support = true }
+T.raises(function()
+  interface { cube, slab, points = { { -0.5, -0.5, 0 }, { 0.5, -0.5, 0 }, { 0.5, 0.5, 0 }, { -0.5, 0.5, 0 },
+                                     { -0.5, -0.5, 0 } } }
+end, "interface{ points } with a corner twice", "interface: field 'points' point 5 repeats point 1")
+T.near(solve { flow = "associative" }.alpha, 0.6, 1e-9, "after the refused joint: the cube slides at mu = 0.6")
 T.done()
