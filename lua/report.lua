@@ -46,6 +46,12 @@ function Result.__tostring(r)
       say("  moves, with dilatancy or without (%d LPs in the sequence)", r.lps)
     elseif r.alpha_assoc ~= r.alpha_assoc then
       say("  the associative LP, where the sequence starts, stopped first: no LP of the sequence ran")
+    elseif r.alpha_assoc == math.huge and r.status == "unstable" and r.alpha == math.huge then
+      say("  normal forces alone carry the live load: no mechanism moves above alpha_min, with")
+      say("  dilatancy or without (the sequence did not run)")
+    elseif r.alpha_assoc == math.huge and r.status == "unstable" then
+      say("  no associative alpha (with dilatancy nothing collapses above alpha_min); the sequence,")
+      say("  which starts from an associative mechanism, did not run: no non-associative alpha")
     elseif r.alpha_assoc == math.huge then
       say("  no associative alpha (unbounded: with dilatancy no mechanism moves); %d LPs in", r.lps)
       say("  the sequence%s; its first fixed LP has no friction", last)

@@ -817,6 +817,33 @@ static bl_system *rigid_system(const bl_model *m, const bl_cone *pyramid, bl_err
     return s;
 }
 
+/* Whether normal forces alone carry the live load (no friction, no dead
+ * load: the fixed LP without capacities and with a right-hand side of
+ * zero is unbounded).  Such forces x_L give every mechanism u, in any flow
+ * rule, a live work f_L . u = -x_L . (A^T u) <= 0, for they push only
+ * where the joints close: no mechanism moves, and alpha is infinite
+ * whether the joints dilate or not.  1 yes, 0 no or not decided, -1 out
+ * of memory. */
+static int live_on_normals(const bl_model *m, const bl_cone *pyramid, const bl_solve_options *o,
+                           bl_error *err)
+{
+    bl_system *f = build(m, pyramid, BL_FRICTION_FIXED, err);
+    if (!f) return -1;
+    double *n = calloc((size_t)f->npoints + 1, sizeof *n);
+    double *lo = malloc((size_t)f->ncols * sizeof *lo), *hi = malloc((size_t)f->ncols * sizeof *hi);
+    int yes = -1;
+    if (n && lo && hi) {
+        bl_system_fixed_bounds(f, n, lo, hi);
+        for (int i = 0; i < f->nrows; i++) f->rhs[i] = 0.0;
+        bl_lp *lp = bl_solve_lp(f, lo, hi, NULL, o, err);
+        yes = lp ? bl_lp_solve(lp) == BL_LP_UNBOUNDED : -1;
+        bl_lp_free(lp);
+    }
+    free(n), free(lo), free(hi);
+    bl_system_free(f);
+    return yes;
+}
+
 /* The LP with unlimited friction, solved on the calling thread or another.
  * It is made on the calling thread: METIS, which orders the interior
  * point's factor when an LP is made, draws from one generator for the
@@ -1023,6 +1050,23 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             s->method = "seqlp";
             s->flow = "nonassociative";
             s->alpha_assoc = s->alpha_rigid = NAN;
+            s->verified = 0;
+        } else if (sliding && s->status == BL_UNSTABLE) {
+            /* unstable, and with dilatancy held up from alpha_min on
+             * whatever the live load: without it a mechanism may still
+             * move at a finite alpha (a wedged block), unless normal
+             * forces alone carry the live load; the sequence, with no
+             * associative answer to start from, does not look for one */
+            int none = live_on_normals(s->model, &pyramid, &base, err);
+            if (none < 0) {
+                bl_solution_free(s);
+                return -1;
+            }
+            s->method = "seqlp";
+            s->flow = "nonassociative";
+            s->alpha_assoc = s->alpha;
+            s->alpha_rigid = NAN;
+            if (!none) s->alpha = NAN;
             s->verified = 0;
         }
         *out = s;

@@ -136,6 +136,12 @@ for _, lp in ipairs { "simplex", "ipm" } do
        ("%s %s"):format(r.status, tostring(r.alpha)))
   T.near(r.alpha_min, (0.5 - 0.4 * math.sqrt(3) / 2) / 0.4, 1e-7,
          lp .. ": block pressed onto a steep slope: alpha_min = (sin 30 - mu cos 30) / mu")
+  -- the default flow is the non-associative one: the normal force alone
+  -- carries the live load, so no mechanism moves in either flow (it was
+  -- reported as the associative answer, flow "associative")
+  T.ok(r.flow == "nonassociative" and r.method == "seqlp" and r.alpha_assoc == math.huge,
+       lp .. ": block pressed onto a steep slope: answered for the non-associative flow",
+       ("%s %s %s"):format(r.flow, r.method, tostring(r.alpha_assoc)))
 end
 T.ok(tostring(r):find("at least alpha = 0.383975", 1, true), "pressed block: print(r) gives the bottom")
 
