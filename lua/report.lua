@@ -38,9 +38,9 @@ function Result.__tostring(r)
   elseif r.status == "optimal" and r.stands == nil then
     say("  (whether the dead load alone has an equilibrium was not decided: its LP stopped short)")
   end
-  if r.note and (not r.certified or r.interrupted) then say("  %s", r.note) end
+  if r.note and (not r.certified or r.interrupted or r.time_up) then say("  %s", r.note) end
   if r.alpha_assoc then
-    local last = r.certified and not r.interrupted and ", the last one its certificate" or ""
+    local last = r.certified and not r.interrupted and not r.time_up and ", the last one its certificate" or ""
     if r.alpha_assoc == math.huge and r.status == "unbounded" then
       say("  the associative LP and the one without friction are both unbounded: no mechanism")
       say("  moves, with dilatancy or without (%d LPs in the sequence)", r.lps)

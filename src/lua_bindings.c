@@ -898,6 +898,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
         set_boolean(L, "certified", s->certified);
         set_boolean(L, "interrupted", s->interrupted);
+        set_boolean(L, "time_up", s->time_up);
         set_integer(L, "lps", s->lps);
         set_number(L, "slip", s->slip);
         if (s->path_steps > 0) {

@@ -1198,8 +1198,12 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
              * certified up to 21 % above the lowest of 10 restarts (W4 and
              * W5 loaded the other way) and 10 restarts take about half a
              * second; else restarts only while none has certified
-             * (BL_SEQLP_RETRIES). */
-            int search = s->assoc_is_solution ||
+             * (BL_SEQLP_RETRIES).  Start 0 certifying the associative
+             * alpha searches too, whatever unlimited friction gives: a
+             * 104-block wall at mu = 1.2 certified its associative 1.0276
+             * (unlimited friction: 3.69), where 3 restarts found 0.3809. */
+            int at_assoc = r.found && r.best_alpha >= s->alpha_assoc * (1.0 - o->settle);
+            int search = s->assoc_is_solution || at_assoc ||
                          (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS);
             retry = sliding && o->starts < 0 && !search && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
             starts = !sliding ? 0 : o->starts >= 0 ? o->starts : search ? BL_SEQLP_SEARCH
@@ -1234,6 +1238,12 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         else
             snprintf(s->note, sizeof s->note, "stopped by Ctrl-C after %d LP%s, in start %d of %d: %s",
                      s->lps, lps, s->nstarts, starts + 1, what);
+    }
+    if (stop == BL_LP_TIME_LIMIT && r.found) {
+        s->time_up = 1;
+        snprintf(s->note, sizeof s->note,
+                 "the time limit ended the search in start %d of %d (%d LPs): lower answers may exist",
+                 s->nstarts, starts + 1, s->lps);
     }
     if (r.found) {
         s->alpha = r.best_alpha;

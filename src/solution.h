@@ -115,6 +115,7 @@ typedef struct bl_solution {
     int assoc_is_solution;   /* alpha_assoc = alpha_rigid: friction limits nothing */
     int certified;           /* a certificate LP accepted (alpha, x, u) */
     int interrupted;         /* Ctrl-C ended the search early */
+    int time_up;             /* the time limit ended it, after an answer */
     double slip;             /* the slip threshold used, relative */
     int lps;                 /* LPs solved (all kinds) */
     int nhistory;

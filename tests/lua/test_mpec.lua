@@ -220,4 +220,15 @@ for _, iface in ipairs { "vertex", "resultant" } do
        ("dome at mu = inf, %s model: mpec gives the associative alpha, verified"):format(iface),
        ("%s vs %s, %s"):format(tostring(rm.alpha), tostring(ra.alpha), rm.status))
 end
+-- A cold start that Ipopt takes to a point the residuals reject (7 blocks,
+-- "not complementary" at 0.268, below the certified 0.373): no answer, so
+-- alpha is NaN, with Ipopt's own point in r.ipopt.alpha (it was the alpha).
+do
+  model { mu = 0.69324946143314 }
+  wall { unit = { 0.50469463121382, 0.33853680456867 }, courses = { { 1, 1 }, { 0.5, 1, 0.5 }, { 1.5, 0.5 } } }
+  local r = solve { method = "mpec", start = "cold", complementarity = "penalty" }
+  T.ok(r.verified or (r.alpha ~= r.alpha and r.ipopt.alpha == r.ipopt.alpha),
+       "mpec, cold start: an answer is verified, or alpha is NaN with Ipopt's alpha kept",
+       ("%s %s %s"):format(r.status, tostring(r.alpha), tostring(r.ipopt.alpha)))
+end
 T.done()
