@@ -33,7 +33,8 @@ return function(core)
   end
 
   function M.model(t)
-    current = core.model(t or {})
+    if t == nil then t = {} end -- model() alone; model(false) is refused by core.model
+    current = core.model(t)
     return current
   end
 

@@ -168,7 +168,8 @@ return function(M)
         row.differing and tostring(row.differing) or "-")
     end
     out[#out + 1] = ("flow r.: the largest of the work, flow and dilatancy residuals; "
-                     .. "mech.: u . u1 / (|u| |u1|) against the first row's mechanism; "
+                     .. "mech.: U . U1 / (|U| |U1|) against the first row's mechanism, U the block velocities "
+                     .. "with rotations times the mean block size (doc/theory.md 6.2); "
                      .. "states: interfaces whose state differs from the first row's")
     return table.concat(out, "\n")
   end

@@ -134,14 +134,23 @@ return function(M)
     if type(poly) ~= "table" or #poly < 3 then
       fail("extrude", "field 'polygon' must be a list of at least 3 points {u, v}")
     end
+    local function finite(x) return type(x) == "number" and x == x and math.abs(x) < math.huge end
     for i, p in ipairs(poly) do
-      if type(p) ~= "table" or type(p[1]) ~= "number" or type(p[2]) ~= "number" or #p ~= 2 then
-        fail("extrude", ("field 'polygon' point %d must be a point {u, v} of two numbers"):format(i))
+      if type(p) ~= "table" or not finite(p[1]) or not finite(p[2]) or #p ~= 2 then
+        fail("extrude", ("field 'polygon' point %d must be a point {u, v} of two finite numbers"):format(i))
       end
     end
+    local area = 0
+    for i, p in ipairs(poly) do
+      local q = poly[i % #poly + 1]
+      area = area + p[1] * q[2] - q[1] * p[2]
+    end
+    if area == 0 then
+      fail("extrude", "field 'polygon' encloses no area (its points on a line, or its edges crossing)")
+    end
     local from, to = t.from or 0, t.to
-    if type(from) ~= "number" or type(to) ~= "number" or not (to > from) then
-      fail("extrude", "fields 'from' and 'to' must be numbers with to > from")
+    if not finite(from) or not finite(to) or not (to > from) then
+      fail("extrude", "fields 'from' and 'to' must be finite numbers with to > from")
     end
     local axis = t.axis or "z"
     local place = ({

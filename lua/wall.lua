@@ -51,7 +51,7 @@ return function(M)
       for e, v in ipairs(course) do
         if not finite(v) or v == 0 then
           fail(("field 'courses' course %d entry %d must be a finite non-zero length, got %s")
-            :format(c, e, tostring(v)))
+            :format(c, e, type(v) == "number" and tostring(v) or ("%s %q"):format(type(v), tostring(v))))
         end
         len = len + math.abs(v)
         any = any or v > 0

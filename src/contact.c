@@ -407,14 +407,16 @@ int bl_contact_detect(bl_model *m, bl_error *err)
         if (!touched) goto oom;
         for (int k = 0; k < m->ninterfaces; k++)
             touched[m->interfaces[k].a] = touched[m->interfaces[k].b] = 1;
-        int lonely = 0;
+        int lonely = 0, total = 0;
+        for (int i = 0; i < n; i++) total += !touched[i] && !m->blocks[i].support;
         size_t len = 0;
         for (int i = 0; i < n; i++) {
             if (touched[i] || m->blocks[i].support) continue;
             if (lonely == 0)
-                len = (size_t)snprintf(msg, sizeof msg, "contacts: no interface on free block");
+                len = (size_t)snprintf(msg, sizeof msg, "contacts: no interface on free block%s",
+                                       total > 1 ? "s" : "");
             if (lonely < 8 && len < sizeof msg)
-                len += (size_t)snprintf(msg + len, sizeof msg - len, " %d", i + 1);
+                len += (size_t)snprintf(msg + len, sizeof msg - len, "%s %d", lonely ? "," : "", i + 1);
             lonely++;
         }
         if (lonely > 8 && len < sizeof msg)

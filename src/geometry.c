@@ -4,6 +4,14 @@
 
 double bl_v2_norm(bl_vec2 a) { return hypot(a.x, a.y); }
 
+bl_vec2 bl_v2_unit(bl_vec2 a)
+{
+    double s = fmax(fabs(a.x), fabs(a.y));
+    if (!(s > 0.0)) return a;
+    a = bl_v2(a.x / s, a.y / s); /* its largest component 1: exact, whatever its size */
+    return bl_v2_scale(a, 1.0 / bl_v2_norm(a));
+}
+
 double bl_polygon_area(const bl_vec2 *p, int n)
 {
     double s = 0.0;

@@ -17,6 +17,8 @@ static inline double bl_v2_dot(bl_vec2 a, bl_vec2 b) { return a.x * b.x + a.y * 
 /* z component of the cross product a x b */
 static inline double bl_v2_cross(bl_vec2 a, bl_vec2 b) { return a.x * b.y - a.y * b.x; }
 double bl_v2_norm(bl_vec2 a);
+/* a over its length, for any finite a (1e-320 or 1e308 long); zero stays zero */
+bl_vec2 bl_v2_unit(bl_vec2 a);
 
 /* Signed area: positive for counter-clockwise polygons. */
 double bl_polygon_area(const bl_vec2 *p, int n);

@@ -155,6 +155,23 @@ static bl_vec2 to_point(lua_State *L, const char *fn, const char *what)
     return bl_v2(c[0], c[1]);
 }
 
+/* The length of the list on the top of the stack, which must have no other
+ * entries: a point left out ({[1] = p, [2] = q, [3] = r, [5] = s}) cut the
+ * list at 3 without a word. */
+static int list_length(lua_State *L, const char *fn, const char *what)
+{
+    int n = (int)lua_rawlen(L, -1), count = 0;
+    lua_pushnil(L);
+    while (lua_next(L, -2)) {
+        lua_pop(L, 1);
+        count++;
+    }
+    if (count != n)
+        fail(L, "%s: %s must be a list of entries 1 to n with none missing; it has %d entries but no "
+                "entry %d", fn, what, count, n + 1);
+    return n;
+}
+
 /* The point {x, y, z} on the top of the stack (popped). */
 static bl_vec3 to_point3(lua_State *L, const char *fn, const char *what)
 {
@@ -217,6 +234,8 @@ static bl_model *check_model(lua_State *L, int idx)
         fail(L, "%s: expects a model, got %s; call it with a colon: m:%s{...}", name,
              luaL_typename(L, idx), name);
     }
+    if (!*p) /* its finalizer ran: brought back by another finalizer, or called by hand */
+        fail(L, "model: this model was collected (its finalizer has run); build it again");
     return *p;
 }
 
@@ -228,9 +247,10 @@ static int block_index(lua_State *L, bl_model *m, int idx, const char *fn, const
     if (!whole && lua_type(L, idx) == LUA_TNUMBER)
         fail(L, "%s: %s must be a whole block number, got %g", fn, what, lua_tonumber(L, idx));
     if (!whole) fail(L, "%s: %s must be a block number, got %s", fn, what, luaL_typename(L, idx));
-    if (m->nblocks == 0) fail(L, "%s: %s is block %d, but the model has no blocks yet", fn, what, (int)b);
+    if (m->nblocks == 0)
+        fail(L, "%s: %s is block %lld, but the model has no blocks yet", fn, what, (long long)b);
     if (b < 1 || b > m->nblocks)
-        fail(L, "%s: %s is block %d, but the model has blocks 1 to %d", fn, what, (int)b,
+        fail(L, "%s: %s is block %lld, but the model has blocks 1 to %d", fn, what, (long long)b,
                    m->nblocks);
     return (int)b - 1;
 }
@@ -307,6 +327,7 @@ static int model_new(lua_State *L)
     bl_vec3 g3 = bl_v3(0, 0, -1);
     if (dim == 3 && field(L, 1, "gravity")) {
         g3 = to_point3(L, "model", "field 'gravity'");
+        g3 = bl_v3_unit(g3);
         if (bl_v3_norm(g3) == 0) fail(L, "model: field 'gravity' must be a non-zero direction");
     }
     const char *name = "";
@@ -338,8 +359,8 @@ static int model_new(lua_State *L)
     m->cohesion = c;
     m->density = rho;
     m->thickness = th;
-    m->gravity = bl_v2_scale(g, 1.0 / bl_v2_norm(g));
-    m->gravity3 = bl_v3_scale(g3, 1.0 / bl_v3_norm(g3));
+    m->gravity = bl_v2_unit(g);
+    m->gravity3 = g3;
     return 1;
 }
 
@@ -382,7 +403,9 @@ static int block_3d(lua_State *L, bl_model *m)
     if (!lua_istable(L, -1))
         return fail(L, "block: field '%s' must be a list of points {x, y, z}, got %s", list,
                     luaL_typename(L, -1));
-    int nv = (int)lua_rawlen(L, -1), vt = lua_gettop(L);
+    char whole[32];
+    snprintf(whole, sizeof whole, "field '%s'", list);
+    int nv = list_length(L, "block", whole), vt = lua_gettop(L);
     if (nv < 4) return fail(L, "block: field '%s' needs at least 4 points, got %d", list, nv);
     bl_vec3 *v = lua_newuserdatauv(L, (size_t)nv * sizeof *v, 0); /* scratch, owned by Lua */
     for (int i = 0; i < nv; i++) {
@@ -421,7 +444,10 @@ static int block_3d(lua_State *L, bl_model *m)
             for (int i = 1; i <= len; i++, t++) {
                 lua_geti(L, -1, i);
                 lua_Number q = lua_tonumber(L, -1);
-                if (!lua_isinteger(L, -1) && (lua_type(L, -1) != LUA_TNUMBER || q != floor(q)))
+                if (lua_type(L, -1) == LUA_TNUMBER && !lua_isinteger(L, -1) && q != floor(q))
+                    return fail(L, "block: field 'faces' face %d entry %d must be a whole vertex "
+                                   "number, got %g", k, i, q);
+                if (lua_type(L, -1) != LUA_TNUMBER)
                     return fail(L, "block: field 'faces' face %d entry %d must be a vertex "
                                    "number, got %s", k, i, luaL_typename(L, -1));
                 if (q < 1 || q > nv)
@@ -454,7 +480,7 @@ static int model_block(lua_State *L)
     if (!lua_istable(L, -1))
         return fail(L, "block: field 'vertices' must be a list of points, got %s",
                           luaL_typename(L, -1));
-    int nv = (int)lua_rawlen(L, -1);
+    int nv = list_length(L, "block", "field 'vertices'");
     if (nv < 3) return fail(L, "block: field 'vertices' needs at least 3 points, got %d", nv);
     int vt = lua_gettop(L);
     bl_vec2 *v = lua_newuserdatauv(L, (size_t)nv * sizeof *v, 0); /* scratch, owned by Lua */
@@ -677,13 +703,14 @@ static int load_3d(lua_State *L, bl_model *m)
         } else {
             dir = to_point3(L, "load", "field 'direction'");
         }
+        dir = bl_v3_unit(dir);
         if (bl_v3_norm(dir) == 0) fail(L, "load: field 'direction' must be a non-zero vector");
     }
     apply_loads(L, m, kinds, pl);
-    if (kinds[1] == 0 || field_given(L, 2, "direction")) m->live_dir3 = bl_v3_scale(dir, 1.0 / bl_v3_norm(dir));
+    if (kinds[1] == 0 || field_given(L, 2, "direction")) m->live_dir3 = bl_v3_unit(dir);
     if (!isnan(tilt)) {
         m->tilt = tilt * M_PI / 180.0;
-        m->tilt_axis = axis;
+        m->tilt_axis = bl_v2_unit(axis);
     }
     return 0;
 }
@@ -743,7 +770,7 @@ static int model_load(lua_State *L)
     if (field_given(L, 2, "axis")) return fail(L, "load: field 'axis' is for 3D models");
 
     apply_loads(L, m, kinds, pl);
-    if (has_dir) m->live_dir = bl_v2_scale(dir, 1.0 / bl_v2_norm(dir));
+    if (has_dir) m->live_dir = bl_v2_unit(dir);
     if (!isnan(tilt)) m->tilt = tilt * M_PI / 180.0;
     return 0;
 }

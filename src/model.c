@@ -101,6 +101,17 @@ static int reserve(void **p, int *cap, int n, size_t size)
 
 #define RESERVE(arr, cap, n) reserve((void **)&(arr), &(cap), (n), sizeof *(arr))
 
+/* A free block's weight must be a positive number: one that overflowed
+ * (density 1e300 times thickness 1e300) or underflowed to zero read as
+ * no collapse at all. */
+static int usable_weight(double w, int id, bl_error *err)
+{
+    if (isfinite(w) && w > 0.0) return 0;
+    return bl_error_set(err, "block %d: its weight, density times size, %s the range of numbers (%g); "
+                             "give the model units nearer 1",
+                        id, w > 0.0 ? "overflows" : "underflows", w);
+}
+
 int bl_model_add_block(bl_model *m, const bl_vec2 *v, int nv, int support,
                        double density, double thickness, bl_error *err)
 {
@@ -114,6 +125,9 @@ int bl_model_add_block(bl_model *m, const bl_vec2 *v, int nv, int support,
     bl_polygon_bbox(v, nv, box);
     double size = hypot(box[2] - box[0], box[3] - box[1]);
     double area = bl_polygon_area(v, nv);
+    if (!isfinite(area) || !isfinite(size))
+        return bl_error_set(err, "block %d: polygon's size overflows the range of numbers; give the "
+                                 "model units nearer 1", id);
     /* All points on one line: zero area, whatever the self-intersection
      * test would say about the edges folding back. */
     int flat = 1;
@@ -144,13 +158,19 @@ int bl_model_add_block(bl_model *m, const bl_vec2 *v, int nv, int support,
         bl_polygon_reverse(copy, nv);
         area = -area;
     }
+    density = density > 0.0 ? density : m->density;
+    thickness = thickness > 0.0 ? thickness : m->thickness;
+    if (!support && usable_weight(density * area * thickness, id, err)) {
+        free(copy);
+        return -1;
+    }
     bl_block *b = &m->blocks[m->nblocks++];
     memset(b, 0, sizeof *b);
     b->nv = nv;
     b->v = copy;
     b->support = support;
-    b->density = density > 0.0 ? density : m->density;
-    b->thickness = thickness > 0.0 ? thickness : m->thickness;
+    b->density = density;
+    b->thickness = thickness;
     b->area = area;
     b->centroid = bl_polygon_centroid(copy, nv);
     b->weight = b->density * b->area * b->thickness;
@@ -172,6 +192,13 @@ int bl_model_add_solid(bl_model *m, bl_polyhedron *solid, int support, double de
         bl_polyhedron_free(solid);
         return -1;
     }
+    density = density > 0.0 ? density : m->density;
+    bl_vec3 centroid;
+    double volume = bl_polyhedron_volume(solid, &centroid);
+    if (!support && usable_weight(density * volume, id, err)) {
+        bl_polyhedron_free(solid);
+        return -1;
+    }
     if (RESERVE(m->blocks, m->cap_blocks, m->nblocks + 1)) {
         bl_polyhedron_free(solid);
         return bl_error_set(err, "block %d: out of memory", id);
@@ -181,8 +208,9 @@ int bl_model_add_solid(bl_model *m, bl_polyhedron *solid, int support, double de
     b->solid = *solid;
     memset(solid, 0, sizeof *solid);
     b->support = support;
-    b->density = density > 0.0 ? density : m->density;
-    b->volume = bl_polyhedron_volume(&b->solid, &b->centroid3);
+    b->density = density;
+    b->volume = volume;
+    b->centroid3 = centroid;
     b->weight = b->density * b->volume;
     memcpy(b->box3, box, sizeof box);
     m->contacts_valid = 0;

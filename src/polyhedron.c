@@ -10,6 +10,14 @@
 
 double bl_v3_norm(bl_vec3 a) { return sqrt(bl_v3_dot(a, a)); }
 
+bl_vec3 bl_v3_unit(bl_vec3 a)
+{
+    double s = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (!(s > 0.0)) return a;
+    a = bl_v3(a.x / s, a.y / s, a.z / s); /* its largest component 1: exact, whatever its size */
+    return bl_v3_scale(a, 1.0 / bl_v3_norm(a));
+}
+
 int bl_polyhedron_make(bl_polyhedron *p, const bl_vec3 *v, int nv, const int *fs,
                        const int *fi, int nf)
 {

@@ -185,4 +185,45 @@ T.raises(function()
                                      { -0.5, -0.5, 0 } } }
 end, "interface{ points } with a corner twice", "interface: field 'points' point 5 repeats point 1")
 T.near(solve { flow = "associative" }.alpha, 0.6, 1e-9, "after the refused joint: the cube slides at mu = 0.6")
+-- Found by a tester (2026-11-28): each read wrongly or crashed before.
+do
+  -- a model whose finalizer has run (by hand here; a finalizer can also
+  -- bring one back): an error, where it crashed
+  local ghost = model {}
+  getmetatable(ghost).__gc(ghost)
+  T.raises(function() return tostring(ghost) end, "a collected model: an error, not a crash",
+           "model: this model was collected")
+  -- model(false) is no model{} (it became the current model)
+  local keep = model { mu = 0.65 }
+  T.raises(function() model(false) end, "model(false) refused", "model: expects a table of named fields, got boolean")
+  T.ok(current() == keep, "model(false): the current model is as it was")
+  -- directions of 1e-320 or 1e308 are directions: the same alpha as {1, 0}
+  block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+  block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+  load { direction = { 1e-320, 0 } }
+  T.near(solve { flow = "associative" }.alpha, 0.65, 1e-9, "load{ direction = {1e-320, 0} }: alpha = mu (was NaN)")
+  load { direction = { 1e308, 1e308 } }
+  T.near(solve { flow = "associative" }.alpha, 0.65 / (1 + 0.65) * math.sqrt(2), 1e-9,
+         "load{ direction = {1e308, 1e308} }: sliding at 45 degrees, alpha = sqrt 2 mu / (1 + mu)")
+  -- block numbers beyond the C int range are named as given
+  T.raises(function() keep:block_info(2 ^ 32 + 1) end, "block_info(2^32 + 1) names that block",
+           "is block 4294967297")
+  -- a weight that overflows (or underflows to zero) is refused, naming the block
+  model { density = 1e300, thickness = 1e300 }
+  T.raises(function() block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } } end,
+           "a weight of density 1e300 times thickness 1e300 refused", "block 1: its weight", "overflows")
+  T.eq(stats().blocks, 0, "the overflowing block was not added")
+  -- a list of vertices with one left out was cut short silently
+  model {}
+  T.raises(function() block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, [5] = { 0, 1 } } } end,
+           "vertices with point 4 left out refused", "block: field 'vertices' must be a list", "no entry 4")
+  -- extrude{} names its own fields
+  model { dim = 3 }
+  T.raises(function() extrude { polygon = { { 0, 0 }, { 1, 0 }, { 1, 0 / 0 } }, to = 1 } end,
+           "extrude{} with a NaN in its polygon names 'polygon'", "extrude: field 'polygon' point 3")
+  T.raises(function() extrude { polygon = { { 0, 0 }, { 1, 0 }, { 2, 0 } }, to = 1 } end,
+           "extrude{} with a flat polygon says so", "extrude: field 'polygon' encloses no area")
+  T.raises(function() extrude { polygon = { { 0, 0 }, { 1, 0 }, { 1, 1 } }, to = math.huge } end,
+           "extrude{ to = inf } names 'to'", "extrude: fields 'from' and 'to' must be finite")
+end
 T.done()
