@@ -363,6 +363,47 @@ oom:
     return bl_error_set(err, "contacts: out of memory");
 }
 
+/* The root of block i's group of blocks joined by interfaces. */
+static int root(int *parent, int i)
+{
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+/* Free blocks that no chain of interfaces joins to a support (a pair of
+ * blocks on each other in the air, or a model without supports) have no
+ * equilibrium under any load that is not balanced by itself: named in msg,
+ * which stays empty when there are none.  Returns -1 out of memory. */
+static int floating(const bl_model *m, char *msg, size_t size)
+{
+    int n = m->nblocks, *parent = malloc((size_t)n * sizeof *parent);
+    char *grounded = calloc((size_t)n, 1);
+    if (!parent || !grounded) {
+        free(parent), free(grounded);
+        return -1;
+    }
+    for (int i = 0; i < n; i++) parent[i] = i;
+    for (int k = 0; k < m->ninterfaces; k++)
+        parent[root(parent, m->interfaces[k].a)] = root(parent, m->interfaces[k].b);
+    int supports = 0;
+    for (int i = 0; i < n; i++)
+        if (m->blocks[i].support) grounded[root(parent, i)] = 1, supports++;
+    int total = 0, shown = 0;
+    for (int i = 0; i < n; i++) total += !m->blocks[i].support && !grounded[root(parent, i)];
+    size_t len = 0;
+    if (total) len = (size_t)snprintf(msg, size, "contacts: free block%s", total > 1 ? "s" : "");
+    for (int i = 0; i < n && shown < 8 && len < size; i++)
+        if (!m->blocks[i].support && !grounded[root(parent, i)])
+            len += (size_t)snprintf(msg + len, size - len, "%s %d", shown++ ? "," : "", i + 1);
+    if (total > shown && len < size) len += (size_t)snprintf(msg + len, size - len, " and %d more", total - shown);
+    if (total && len < size)
+        snprintf(msg + len, size - len, " %s on no support, directly or through other blocks%s",
+                 total > 1 ? "rest" : "rests",
+                 supports ? "" : " (the model has none: make one with block{ ..., support = true })");
+    free(parent), free(grounded);
+    return 0;
+}
+
 int bl_contact_detect(bl_model *m, bl_error *err)
 {
     double tol, gap;
@@ -423,6 +464,7 @@ int bl_contact_detect(bl_model *m, bl_error *err)
             snprintf(msg + len, sizeof msg - len, " and %d more", lonely - 8);
         free(touched);
     }
+    if (!msg[0] && floating(m, msg, sizeof msg)) goto oom;
     if (msg[0]) {
         bl_error_set(err, "%s", msg);
         goto fail;

@@ -138,4 +138,15 @@ for dim = 2, 3 do
        ("%dD cap stone on a pedestal: the declared joint, named either way, gives the detected alpha"):format(dim),
        ("%s, %s, %s"):format(tostring(alphas[0]), tostring(alphas[1]), tostring(alphas[2])))
 end
+-- Blocks that rest on no support, directly or through others, have no
+-- equilibrium: named (a pair on each other in the air was "infeasible").
+model {}
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+block { vertices = { { 0, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } } }
+T.raises(function() solve {} end, "a model without supports: said so",
+         "contacts: free blocks 1, 2 rest on no support", "the model has none")
+block { vertices = { { 5, -1 }, { 6, -1 }, { 6, 0 }, { 5, 0 } }, support = true }
+block { vertices = { { 5, 0 }, { 6, 0 }, { 6, 1 }, { 5, 1 } } }
+T.raises(function() contacts {} end, "a pair in the air beside a supported block: the pair named",
+         "contacts: free blocks 1, 2 rest on no support, directly or through other blocks")
 T.done()
