@@ -1066,6 +1066,7 @@ static void push_details(lua_State *L, const bl_solution *s)
         const bl_interface *in = &m->interfaces[k];
         push_interface(L, m, in);
         set_string(L, "state", bl_state_name(s->state[k]));
+        set_number(L, "motion", s->speed_max > 0.0 ? s->speed[k] / s->speed_max : 0.0);
         if (m->dim == 3) {
             push_triple(L, in->t2);
             lua_setfield(L, -2, "t2");

@@ -61,7 +61,8 @@ bl_solution *bl_solution_new(bl_model *c)
     s->force = calloc((c->dim == 3 ? 3 * np : 4 * ni) + 1, sizeof *s->force);
     s->state = calloc(ni + 1, sizeof *s->state);
     s->hinge = calloc(ni + 1, sizeof *s->hinge);
-    if (!s->u || !s->force || !s->state || !s->hinge) {
+    s->speed = calloc(ni + 1, sizeof *s->speed);
+    if (!s->u || !s->force || !s->state || !s->hinge || !s->speed) {
         bl_solution_free(s);
         return NULL;
     }
@@ -104,6 +105,7 @@ void bl_solution_free(bl_solution *s)
     free(s->force);
     free(s->state);
     free(s->hinge);
+    free(s->speed);
     free(s->history);
     free(s->start);
     free(s->x);
@@ -167,9 +169,12 @@ static void classify3(bl_solution *s)
     double vmax = 0.0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
+        s->speed[k] = 0.0;
         for (int e = 0; e < in->np; e++)
-            vmax = fmax(vmax, bl_v3_norm(relative3(s, in->a, in->b, in->poly[e])));
+            s->speed[k] = fmax(s->speed[k], bl_v3_norm(relative3(s, in->a, in->b, in->poly[e])));
+        vmax = fmax(vmax, s->speed[k]);
     }
+    s->speed_max = vmax;
     double eps = s->motion_eps = MOTION_THRESHOLD * vmax;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
@@ -203,11 +208,14 @@ void bl_solution_classify(bl_solution *s)
         return;
     }
     double vmax = 0.0;
-    for (int k = 0; k < m->ninterfaces; k++)
-        for (int e = 0; e < 2; e++) {
-            const bl_interface *in = &m->interfaces[k];
-            vmax = fmax(vmax, bl_v2_norm(bl_solution_relative_velocity(s, in->a, in->b, in->p[e])));
-        }
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        s->speed[k] = 0.0;
+        for (int e = 0; e < 2; e++)
+            s->speed[k] = fmax(s->speed[k], bl_v2_norm(bl_solution_relative_velocity(s, in->a, in->b, in->p[e])));
+        vmax = fmax(vmax, s->speed[k]);
+    }
+    s->speed_max = vmax;
     double eps = s->motion_eps = MOTION_THRESHOLD * vmax;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];

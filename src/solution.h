@@ -89,6 +89,8 @@ typedef struct bl_solution {
     int *hinge;              /* per interface: 0 or 1 for a rocking joint's
                                 closed end, -1 otherwise (2D) */
     double motion_eps;       /* relative velocities up to this count as zero */
+    double *speed;           /* per interface: its largest relative velocity */
+    double speed_max;        /* the largest over the interfaces */
     int stands;              /* alpha = 0 has an equilibrium within the yield
                                 conditions: 1, 0 (the check's LP is
                                 infeasible), -1 (not decided: not checked, or

@@ -232,4 +232,41 @@ f:close()
 T.ok(lines[3] == "ASCII" and #lines[2] <= 255, "vtk: a name with a line break keeps the title on one line",
      lines[2])
 os.remove(vtk)
+-- Joints are marked only where they move at least 1 % as fast as the
+-- fastest joint (blocks moving less are drawn still): the markers in the
+-- SVG (hinge dots, sliding and separating strokes, less the legend's three)
+-- number the moving joints counted here from r.mechanism and the blocks'
+-- centroids.  On this wall 4 joints move less than that; they were marked.
+do
+  local m = model { mu = 0.6 }
+  wall { courses = require("walls").running_bond(12), unit = { 0.4, 0.175 } }
+  local rr = solve { progress = false }
+  local function velocity(i, p)
+    local u, c = rr.mechanism[i], m:block_info(i).centroid
+    if not u then return 0, 0 end -- a support
+    return u[1] - u[3] * (p[2] - c[2]), u[2] + u[3] * (p[1] - c[1])
+  end
+  local speed, fastest = {}, 0
+  for k, f in ipairs(rr.interfaces) do
+    speed[k] = 0
+    for _, p in ipairs(f.points) do
+      local ax, ay = velocity(f.a, p)
+      local bx, by = velocity(f.b, p)
+      speed[k] = math.max(speed[k], math.sqrt((ax - bx) ^ 2 + (ay - by) ^ 2))
+    end
+    fastest = math.max(fastest, speed[k])
+  end
+  local moving, slow = 0, 0
+  for k, f in ipairs(rr.interfaces) do
+    local marks = f.state == "sliding" or f.state == "separating" or (f.state == "rocking" and f.hinge)
+    if marks and speed[k] >= 0.01 * fastest then moving = moving + 1 elseif marks then slow = slow + 1 end
+  end
+  rr:svg(svg)
+  local t = contents(svg)
+  local function count(pattern) local n = 0; for _ in t:gmatch(pattern) do n = n + 1 end; return n end
+  local marked = count("fill:rgb%(84%%,9%%,9%%%)") + strokes(svg, BLUE) + strokes(svg, "96%,52%,3%") - 3
+  T.ok(slow > 0 and marked == moving, "running bond 12 x 12: joints marked only where they move at least 1 % as fast as the fastest",
+       ("%d marked, %d moving, %d slower"):format(marked, moving, slow))
+  os.remove(svg)
+end
 T.done()
