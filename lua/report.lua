@@ -39,6 +39,11 @@ function Result.__tostring(r)
     say("  (whether the dead load alone has an equilibrium was not decided: its LP stopped short)")
   end
   if r.note and (not r.certified or r.interrupted or r.time_up) then say("  %s", r.note) end
+  if r.dead and r.dead.mechanism then
+    local most = r.dead.alpha > 1e-9 and ("at most %.6g times it"):format(r.dead.alpha) or "no part of it"
+    say("  the dead load alone has no equilibrium (the model carries %s); r.dead, the", most)
+    say("  solve with the dead load as the live load, shows how it fails: r.dead:png(file)")
+  end
   if r.alpha_assoc then
     local last = r.certified and not r.interrupted and not r.time_up and ", the last one its certificate" or ""
     if r.alpha_assoc == math.huge and r.status == "unbounded" then
@@ -259,6 +264,7 @@ function report.blocks(list) return setmetatable(list, Blocks) end
 
 -- Gives a fresh result from the core its metatables.
 function report.wrap(r)
+  if r.dead then report.wrap(r.dead) end
   for _, k in ipairs(r.interfaces or {}) do setmetatable(k, Interface) end
   for _, u in ipairs(r.mechanism or {}) do setmetatable(u, Velocity) end
   return setmetatable(r, Result)

@@ -377,3 +377,28 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
     *out = s;
     return 0;
 }
+
+int bl_assoc_dead_alone(const bl_model *m, const bl_solve_options *o, bl_solution **out, bl_error *err)
+{
+    bl_model *c = bl_model_copy(m);
+    if (!c) return bl_error_set(err, "solve: out of memory");
+    /* the dead load, turned by the tilt, becomes the live load; the live
+     * load goes */
+    c->live_weight = c->self_weight;
+    c->live_dir = bl_model_gravity(m);
+    c->live_dir3 = bl_model_gravity3(m);
+    c->self_weight = 0;
+    c->tilt = 0.0;
+    int n = 0;
+    for (int l = 0; l < c->nloads; l++)
+        if (!c->loads[l].live) {
+            c->loads[n] = c->loads[l];
+            c->loads[n++].live = 1;
+        }
+    c->nloads = n;
+    bl_solve_options d = *o;
+    d.mps = NULL;
+    int rc = bl_assoc_solve(c, &d, out, err);
+    bl_model_free(c);
+    return rc;
+}

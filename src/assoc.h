@@ -57,4 +57,11 @@ bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi,
  * be any bl_status: an infeasible model is an answer, not an error. */
 int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl_error *err);
 
+/* Why a model is infeasible: the dead load alone, made the live load (no
+ * other), solved as bl_assoc_solve does.  Its alpha is the largest multiple
+ * of the dead load that has an equilibrium, below 1 where the dead load
+ * alone cannot stand, and its mechanism how it then fails
+ * (doc/theory.md 8). */
+int bl_assoc_dead_alone(const bl_model *m, const bl_solve_options *o, bl_solution **out, bl_error *err);
+
 #endif

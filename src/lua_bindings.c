@@ -1251,6 +1251,20 @@ static int model_solve(lua_State *L)
     if (s->status == BL_INTERRUPTED && !s->interrupted)
         return fail(L, "solve: interrupted (Ctrl-C); the model is as it was");
     push_result(L, s, sidx);
+    int dead_load = m->self_weight;
+    for (int l = 0; l < m->nloads; l++) dead_load |= !m->loads[l].live;
+    if (s->status == BL_INFEASIBLE && dead_load) {
+        /* why no equilibrium: the dead load alone, as r.dead */
+        int t = lua_gettop(L);
+        bl_solution **dead = lua_newuserdatauv(L, sizeof *dead, 0);
+        *dead = NULL;
+        luaL_setmetatable(L, SOLUTION_MT);
+        if (bl_assoc_dead_alone(m, &o, dead, &err) == 0) {
+            push_result(L, *dead, t + 1);
+            lua_setfield(L, t, "dead");
+        }
+        lua_settop(L, t);
+    }
     lua_pushvalue(L, -1);
     lua_setfield(L, LUA_REGISTRYINDEX, LAST_RESULT);
     /* A sequence stopped by Ctrl-C still stops the chunk, but what it found

@@ -3,6 +3,13 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* Forces below this (in units of W0) set no scale for the products of
+ * complementarity: an answer that carries no load (alpha = 0 with the dead
+ * load made the live one) has forces of round-off, 1e-13, and products
+ * measured against them read 0.07 (a force in a model that carries its
+ * loads is rarely below a tenth of W0). */
+#define FORCE_FLOOR 1e-2
+
 /* Normalization and the virtual-work balance: the static alpha equals the
  * kinematic one, (dissipation - fD . u) / fL . u, relative to the larger
  * of the works and the live load's unit work fL . u (where alpha = 0 and
@@ -33,7 +40,11 @@ static void equilibrium(const bl_system *s, const double *x, double alpha, doubl
     bl_system_residual(s, x, alpha, r);
     for (int i = 0; i < s->nrows; i++) S[i] = fabs(s->rhs[i]);
     for (int j = 0; j < s->ncols; j++) {
-        double xj = j < s->nforce ? x[j] : alpha;
+        /* the live load counts at least once: an answer at alpha = 0 (the
+         * dead load made the live one, in a model that carries none of
+         * it) has no loads and forces but round-off, and is not a model
+         * of light blocks */
+        double xj = j < s->nforce ? x[j] : fmax(fabs(alpha), 1.0);
         for (int p = s->colptr[j]; p < s->colptr[j + 1]; p++) S[s->rowind[p]] += fabs(s->val[p] * xj);
     }
     int rows = s->dim == 3 ? 6 : 3; /* a block's, one after the other */
@@ -84,7 +95,7 @@ int bl_verify(const bl_system *s, double alpha, const double *x, const double *y
         X = fmax(X, fabs(x[j]));
     }
     free(S);
-    if (X == 0.0) X = 1.0;
+    X = fmax(X, FORCE_FLOOR);
 
     /* Kinematics: w_j = (A^T y)_j is the power of a unit value of column j,
      * the relative velocity along the column's force direction.  V is the
@@ -170,7 +181,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         power[p] = 0.0;
         h[p] = d3 ? -INFINITY : 0.0;
     }
-    if (X == 0.0) X = 1.0;
+    X = fmax(X, FORCE_FLOOR);
     /* the speed of every joint (with its twist) and the velocity scale V.
      * 3D: the tangential power of a cone column, along, is its power less
      * its normal part; the friction's dissipation is N times the most a

@@ -94,6 +94,15 @@ for _, lp in ipairs { "simplex", "ipm" } do
   T.ok(r.message:find("no equilibrium", 1, true), lp .. ": infeasible: the sentence says why")
   T.ok(not r.verified, lp .. ": infeasible: nothing claimed verified")
   T.ok(tostring(r):find("infeasible", 1, true), lp .. ": infeasible: the printed result says so")
+  -- why: r.dead, the dead load made the live one.  Without cohesion the
+  -- problem is homogeneous in the loads, so no part of it is carried
+  -- (alpha 0), and the mechanism drops the block, without turning, along
+  -- the wall or away from it.
+  local u = r.dead and r.dead.mechanism and r.dead.mechanism[1]
+  T.ok(r.dead and r.dead.verified and math.abs(r.dead.alpha) < 1e-9 and u and u[2] < 0
+       and u[1] <= 1e-9 * math.abs(u[2]) and math.abs(u[3]) < 1e-9 * math.abs(u[2]),
+       lp .. ": infeasible: r.dead, verified, carries no part of the dead load and drops the block",
+       r.dead and ("%s %s"):format(tostring(r.dead.alpha), tostring(r.dead.verified)) or "no r.dead")
 
   -- An iteration cap far below what W4 needs (about 290 simplex iterations,
   -- 12 interior-point ones) stops the engine without an answer.
@@ -394,5 +403,27 @@ do
        or (r.status == "time limit" and not r.certified and r.alpha ~= r.alpha),
        "W4, 200 starts in 0.2 s: the certified answer stands with time_up, or status 'time limit'",
        ("%s %s %d starts"):format(r.status, tostring(r.time_up), #(r.starts or {})))
+end
+-- Why a model is infeasible, with cohesion: a flat block 2 x 0.2 on a
+-- support tilted 30 degrees (mu = 0.3 < tan 30) is held by its cohesion c
+-- over the joint's length 2 up to lambda W sin 30 = mu lambda W cos 30 + 2 c,
+-- lambda = 2 c / (W (sin 30 - mu cos 30)) = 0.4163 for c = 0.02, W = 0.4;
+-- the live load acts on another block, so no alpha helps: infeasible, and
+-- r.dead.alpha is that lambda.
+do
+  model { mu = 0.3, cohesion = 0.02 }
+  block { vertices = { { 0, 0 }, { 2, 0 }, { 2, 0.2 }, { 0, 0.2 } } }
+  block { vertices = { { -1, -1 }, { 3, -1 }, { 3, 0 }, { -1, 0 } }, support = true }
+  local other = block { vertices = { { 5, 0 }, { 6, 0 }, { 6, 1 }, { 5, 1 } } }
+  local ground = block { vertices = { { 4, -1 }, { 7, -1 }, { 7, 0 }, { 4, 0 } }, support = true }
+  interface { other, ground, mu = 2 }
+  load { tilt = 30, live = "none" }
+  load { live = { block = other, at = { 5.5, 1 }, force = { 1, 0 } } }
+  local r = solve { progress = false }
+  local lambda = 2 * 0.02 / (0.4 * (0.5 - 0.3 * math.sqrt(3) / 2))
+  T.ok(r.status == "infeasible" and r.dead and r.dead.verified and math.abs(r.dead.alpha - lambda) <= 1e-9 * lambda,
+       "infeasible with cohesion: r.dead.alpha = 2 c / (W (sin 30 - mu cos 30)), verified (tolerance 1e-9)",
+       r.dead and tostring(r.dead.alpha) or r.status)
+  T.ok(tostring(r):find("carries at most 0.416333 times it", 1, true), "infeasible with cohesion: print(r) gives the part carried")
 end
 T.done()
