@@ -74,14 +74,19 @@ static int point_columns(double mu, const bl_cone *cone, int point, int resultan
  * disks approximated alike.  The polygon, centrally symmetric, is the sum
  * of m segments: m = k/2 for a pyramid of k facets (k even), m = k for an
  * odd k (a 2k-gon).  Inscribed (corners on the disk, one on t2): segments
- * along psi_j = pi/(2m) + j pi/m of half-length C sin(pi/(2m));
- * circumscribed (sides touching it, one across t2): along j pi/m, half
- * length C tan(pi/(2m)).  Returns m. */
+ * along the sides, psi_j = pi/2 + pi/(2m) + j pi/m, of half-length
+ * C sin(pi/(2m)); circumscribed (sides touching it, one across t2): along
+ * pi/2 + j pi/m, half length C tan(pi/(2m)).  For even m the quarter turn
+ * gives the same directions and is left out (their order kept); for odd m
+ * it is what puts the corners where the pyramid's edges are (without it a
+ * 6-facet hexagon was turned 30 degrees from the pyramid's, and no box
+ * sliding on it certified).  Returns m. */
 static int cohesion_columns(const bl_cone *cone, double nt[][3], double *couple,
                             bl_column_kind *kind, double *bound, double C)
 {
     int k = cone->facets, m = k % 2 ? k : k / 2;
-    double half = M_PI / (2.0 * m), shift = cone->circumscribed ? 0.0 : half;
+    double half = M_PI / (2.0 * m);
+    double shift = (cone->circumscribed ? 0.0 : half) + (m % 2 ? M_PI / 2.0 : 0.0);
     double a = cone->circumscribed ? C * tan(half) : C * sin(half);
     for (int j = 0; j < m; j++) {
         double psi = shift + j * M_PI / m, c = cos(psi), s = sin(psi);

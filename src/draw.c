@@ -512,16 +512,16 @@ static int joint_pieces(const pic *P, int i, const int *face_off, const double *
     return n;
 }
 
-/* Face k of block b as moved: the mean of its corners in *c and twice its
- * area along its normal in *nrm (outward). */
-static void face_plane(const pic *P, int b, int k, bl_vec3 *c, bl_vec3 *nrm)
+/* Face k of block b as moved (or where it was, unmoved): the mean of its
+ * corners in *c and twice its area along its normal in *nrm (outward). */
+static void face_plane(const pic *P, int b, int k, int unmoved, bl_vec3 *c, bl_vec3 *nrm)
 {
     const bl_polyhedron *S = &P->m->blocks[b].solid;
     int a0 = S->fs[k], len = S->fs[k + 1] - a0;
     *c = *nrm = (bl_vec3){0, 0, 0};
     for (int i = 0; i < len; i++) {
-        bl_vec3 p = moved3(P, b, S->v[S->fi[a0 + i]]);
-        bl_vec3 q = moved3(P, b, S->v[S->fi[a0 + (i + 1) % len]]);
+        bl_vec3 p = S->v[S->fi[a0 + i]], q = S->v[S->fi[a0 + (i + 1) % len]];
+        if (!unmoved) p = moved3(P, b, p), q = moved3(P, b, q);
         *c = bl_v3_add(*c, bl_v3_scale(p, 1.0 / len));
         *nrm = bl_v3_add(*nrm, bl_v3_cross(p, q));
     }
@@ -554,7 +554,7 @@ static void support_keys(const pic *P, face3 *F, int n, const int *face_off, dou
     for (int t = 0; t < n; t++) {
         if (!m->blocks[F[t].block].support) continue;
         bl_vec3 c, nrm;
-        face_plane(P, F[t].block, F[t].face, &c, &nrm);
+        face_plane(P, F[t].block, F[t].face, 0, &c, &nrm);
         nrm = bl_v3_scale(nrm, 1.0 / bl_v3_norm(nrm)); /* towards the viewer: the face is shown */
         double d0 = bl_v3_dot(nrm, c), tol = 1e-9 * (1.0 + fabs(d0));
         double behind = -INFINITY, front = INFINITY;
@@ -575,6 +575,47 @@ static void support_keys(const pic *P, face3 *F, int n, const int *face_off, dou
  * turned away are dropped, the others painted far to near, shaded by how
  * squarely they face the light (from the viewer's upper left); supports
  * grey, moving blocks terracotta, still ones pale. */
+/* Faces that lie wholly against neighbours they move with: the contact
+ * polygons on them, of joints that do not visibly move, cover their area.
+ * They cannot be seen, and painted in the order of their depths the top
+ * of a course showed through the front of the next, seen from 45 degrees
+ * (a wall overturning as one body).  hidden: per face (face_off[b] + k). */
+static void hidden_faces(const pic *P, const int *face_off, char *hidden)
+{
+    const bl_model *m = P->m;
+    int nf = face_off[m->nblocks - 1] + m->blocks[m->nblocks - 1].solid.nf;
+    double *covered = calloc((size_t)nf + 1, sizeof *covered);
+    if (!covered) return;
+    for (int i = 0; i < m->ninterfaces; i++) {
+        const bl_interface *f = &m->interfaces[i];
+        if (P->k > 0.0 && P->s->state && visible_motion(P, i)) continue;
+        bl_vec3 cen = {0, 0, 0};
+        for (int e = 0; e < f->np; e++) cen = bl_v3_add(cen, bl_v3_scale(f->poly[e], 1.0 / f->np));
+        for (int side = 0; side < 2; side++) {
+            int b = side ? f->b : f->a;
+            const bl_polyhedron *S = &m->blocks[b].solid;
+            bl_vec3 out = bl_v3_scale(f->n3, side ? -1.0 : 1.0); /* the face's outward normal */
+            for (int k = 0; k < S->nf; k++) {
+                bl_vec3 c, nrm;
+                face_plane(P, b, k, 1, &c, &nrm);
+                double area2 = bl_v3_norm(nrm);
+                if (!(area2 > 0.0) || bl_v3_dot(nrm, out) < 0.999 * area2) continue;
+                double size = sqrt(area2);
+                if (fabs(bl_v3_dot(bl_v3_sub(cen, c), nrm)) / area2 > 1e-9 * size) continue;
+                covered[face_off[b] + k] += f->area3;
+                break;
+            }
+        }
+    }
+    for (int b = 0; b < m->nblocks; b++)
+        for (int k = 0; k < m->blocks[b].solid.nf; k++) {
+            bl_vec3 c, nrm;
+            face_plane(P, b, k, 1, &c, &nrm);
+            hidden[face_off[b] + k] = covered[face_off[b] + k] >= (1.0 - 1e-9) * 0.5 * bl_v3_norm(nrm);
+        }
+    free(covered);
+}
+
 static void draw3(cairo_t *cr, const pic *P)
 {
     const bl_model *m = P->m;
@@ -588,10 +629,12 @@ static void draw3(cairo_t *cr, const pic *P)
         if (marked3(P, i)) npieces += 2 * m->interfaces[i].np;
     face3 *F = malloc(((size_t)nf + (size_t)npieces + 1) * sizeof *F);
     double *depth = malloc(((size_t)nf + 1) * sizeof *depth);
-    if (!F || !depth || !face_off) {
-        free(F), free(depth), free(face_off);
+    char *hidden = calloc((size_t)nf + 1, 1);
+    if (!F || !depth || !face_off || !hidden) {
+        free(F), free(depth), free(face_off), free(hidden);
         return;
     }
+    hidden_faces(P, face_off, hidden);
     bl_vec3 light = bl_v3_add(bl_v3_add(bl_v3_scale(P->eye, 0.8), bl_v3_scale(P->up, 0.5)),
                               bl_v3_scale(P->right, -0.35));
     light = bl_v3_scale(light, 1.0 / bl_v3_norm(light));
@@ -600,10 +643,10 @@ static void draw3(cairo_t *cr, const pic *P)
         const bl_polyhedron *S = &m->blocks[b].solid;
         for (int k = 0; k < S->nf; k++) {
             bl_vec3 c, nrm;
-            face_plane(P, b, k, &c, &nrm);
+            face_plane(P, b, k, 0, &c, &nrm);
             double nn = bl_v3_norm(nrm);
             depth[face_off[b] + k] = NAN;
-            if (!(nn > 0.0) || bl_v3_dot(nrm, P->eye) <= 0.0) continue;
+            if (!(nn > 0.0) || bl_v3_dot(nrm, P->eye) <= 0.0 || hidden[face_off[b] + k]) continue;
             nrm = bl_v3_scale(nrm, 1.0 / nn);
             depth[face_off[b] + k] = bl_v3_dot(c, P->eye);
             F[n++] = (face3){b, k, depth[face_off[b] + k], fabs(bl_v3_dot(nrm, light))};
@@ -642,6 +685,7 @@ static void draw3(cairo_t *cr, const pic *P)
     free(F);
     free(depth);
     free(face_off);
+    free(hidden);
 }
 
 static void draw(cairo_t *cr, const pic *P)

@@ -9,6 +9,8 @@ bl_vec2 bl_v2_unit(bl_vec2 a)
     double s = fmax(fabs(a.x), fabs(a.y));
     if (!(s > 0.0)) return a;
     a = bl_v2(a.x / s, a.y / s); /* its largest component 1: exact, whatever its size */
+    if (fabs(a.x) < 1e-15) a.x = 0.0;
+    if (fabs(a.y) < 1e-15) a.y = 0.0;
     return bl_v2_scale(a, 1.0 / bl_v2_norm(a));
 }
 

@@ -17,7 +17,11 @@ static inline double bl_v2_dot(bl_vec2 a, bl_vec2 b) { return a.x * b.x + a.y * 
 /* z component of the cross product a x b */
 static inline double bl_v2_cross(bl_vec2 a, bl_vec2 b) { return a.x * b.y - a.y * b.x; }
 double bl_v2_norm(bl_vec2 a);
-/* a over its length, for any finite a (1e-320 or 1e308 long); zero stays zero */
+/* A direction: a over its length, for any finite a (1e-320 or 1e308
+ * long), its components below 1e-15 of the largest set to 0 (the
+ * cos(pi/2) = 6e-17 of a direction meant along an axis: a load along y
+ * with it stopped the 3D sequence's certificates passing); zero stays
+ * zero. */
 bl_vec2 bl_v2_unit(bl_vec2 a);
 
 /* Signed area: positive for counter-clockwise polygons. */

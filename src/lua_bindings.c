@@ -903,6 +903,41 @@ static int model_block_info(lua_State *L)
 
 static void push_details(lua_State *L, const bl_solution *s);
 
+/* Into the result table on the top: each loaded interface's centre of
+ * pressure (`at`, on the thrust line) and the reactions on the supports. */
+static void push_thrust(lua_State *L, const bl_solution *s)
+{
+    const bl_model *m = s->model;
+    size_t ni = (size_t)m->ninterfaces + 1, nb = (size_t)m->nblocks + 1;
+    /* scratch, owned by Lua (an error cannot leak it) */
+    bl_vec3 *F = lua_newuserdatauv(L, (2 * ni + nb) * sizeof *F + (ni + nb) * sizeof(double), 0);
+    bl_vec3 *C = F + ni, *R = C + ni;
+    double *N = (double *)(R + nb), *M = N + ni;
+    bl_solution_resultants(s, F, N, C);
+    bl_solution_reactions(s, F, C, R, M);
+    lua_createtable(L, 0, 4);
+    for (int i = 0; i < m->nblocks; i++) {
+        if (!m->blocks[i].support) continue;
+        lua_createtable(L, 0, 2);
+        if (m->dim == 3) push_triple(L, R[i]);
+        else push_pair(L, R[i].x, R[i].y);
+        lua_setfield(L, -2, "force");
+        if (m->dim == 2) set_number(L, "moment", M[i]);
+        lua_rawseti(L, -2, i + 1);
+    }
+    lua_setfield(L, -3, "reactions");
+    lua_getfield(L, -2, "interfaces");
+    for (int k = 0; k < m->ninterfaces; k++) {
+        if (!(N[k] > 0.0)) continue;
+        lua_rawgeti(L, -1, k + 1);
+        if (m->dim == 3) push_triple(L, C[k]);
+        else push_pair(L, C[k].x, C[k].y);
+        lua_setfield(L, -2, "at");
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 2);
+}
+
 /* Builds the result table of doc/guide.md from s (on the stack at sidx). */
 static void push_result(lua_State *L, const bl_solution *s, int sidx)
 {
@@ -1039,6 +1074,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         lua_setfield(L, -2, bl_state_name((bl_state)st));
     }
     lua_setfield(L, -2, "states");
+    push_thrust(L, s);
 }
 
 /* Pushes a result's mechanism (per block: vx, vy, omega in 2D; vx, vy, vz,

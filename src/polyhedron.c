@@ -15,6 +15,9 @@ bl_vec3 bl_v3_unit(bl_vec3 a)
     double s = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
     if (!(s > 0.0)) return a;
     a = bl_v3(a.x / s, a.y / s, a.z / s); /* its largest component 1: exact, whatever its size */
+    if (fabs(a.x) < 1e-15) a.x = 0.0;
+    if (fabs(a.y) < 1e-15) a.y = 0.0;
+    if (fabs(a.z) < 1e-15) a.z = 0.0;
     return bl_v3_scale(a, 1.0 / bl_v3_norm(a));
 }
 

@@ -24,7 +24,7 @@ static inline bl_vec3 bl_v3_cross(bl_vec3 a, bl_vec3 b)
     return bl_v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 double bl_v3_norm(bl_vec3 a);
-/* a over its length, for any finite a (1e-320 or 1e308 long); zero stays zero */
+/* A direction, as bl_v2_unit in 3D. */
 bl_vec3 bl_v3_unit(bl_vec3 a);
 
 typedef struct bl_polyhedron {

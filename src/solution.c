@@ -246,3 +246,61 @@ void bl_solution_classify(bl_solution *s)
         }
     }
 }
+
+void bl_solution_resultants(const bl_solution *s, bl_vec3 *F, double *N, bl_vec3 *C)
+{
+    const bl_model *m = s->model;
+    const double *f = s->force;
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        bl_vec3 force = {0, 0, 0}, moment = {0, 0, 0}, mid = {0, 0, 0};
+        double n = 0.0;
+        int np = m->dim == 3 ? in->np : 2;
+        for (int e = 0; e < np; e++) {
+            /* normal and shear(s) at point e: 3 numbers in 3D, 2 in 2D */
+            bl_vec3 p, nrm, fe;
+            if (m->dim == 3) {
+                p = in->poly[e];
+                nrm = in->n3;
+                fe = bl_v3_add(bl_v3_scale(in->n3, f[0]),
+                               bl_v3_add(bl_v3_scale(in->t2, f[1]), bl_v3_scale(in->t3, f[2])));
+                f += 3;
+            } else {
+                p = bl_v3(in->p[e].x, in->p[e].y, 0.0);
+                nrm = bl_v3(in->normal.x, in->normal.y, 0.0);
+                bl_vec3 tau = bl_v3(-in->normal.y, in->normal.x, 0.0);
+                fe = bl_v3_add(bl_v3_scale(nrm, f[0]), bl_v3_scale(tau, f[1]));
+                f += 2;
+            }
+            double ne = bl_v3_dot(fe, nrm);
+            force = bl_v3_add(force, fe);
+            moment = bl_v3_add(moment, bl_v3_scale(p, ne));
+            mid = bl_v3_add(mid, bl_v3_scale(p, 1.0 / np));
+            n += ne;
+        }
+        F[k] = force;
+        N[k] = n;
+        C[k] = n > 0.0 ? bl_v3_scale(moment, 1.0 / n) : mid;
+    }
+}
+
+void bl_solution_reactions(const bl_solution *s, const bl_vec3 *F, const bl_vec3 *C, bl_vec3 *R, double *M)
+{
+    const bl_model *m = s->model;
+    for (int i = 0; i < m->nblocks; i++) {
+        R[i] = bl_v3(0, 0, 0);
+        if (M) M[i] = 0.0;
+    }
+    for (int k = 0; k < m->ninterfaces; k++) {
+        const bl_interface *in = &m->interfaces[k];
+        /* F acts on b; the free block a pushes a support b with F, a free
+         * block b a support a with -F */
+        int sup = m->blocks[in->b].support ? in->b : m->blocks[in->a].support ? in->a : -1;
+        if (sup < 0) continue;
+        bl_vec3 f = sup == in->b ? F[k] : bl_v3_scale(F[k], -1.0);
+        R[sup] = bl_v3_add(R[sup], f);
+        /* 2D: the shear acts along the joint's line, the normal part at C;
+         * both through C, which lies on that line */
+        if (M && m->dim == 2) M[sup] += C[k].x * f.y - C[k].y * f.x;
+    }
+}

@@ -168,6 +168,17 @@ bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec
  * fills state and hinge. */
 void bl_solution_classify(bl_solution *s);
 
+/* Per interface k: the resultant force F[k] that block a exerts on block b
+ * (global axes; 2D in x, y), its normal part N[k], and C[k], where that
+ * normal part acts (the centre of pressure; the thrust line passes there;
+ * the joint's middle where N <= 0).  From s->force. */
+void bl_solution_resultants(const bl_solution *s, bl_vec3 *F, double *N, bl_vec3 *C);
+
+/* The forces the free blocks exert on each support i: R[i] (global axes),
+ * and in 2D M[i], their moment about the origin (M may be NULL); zero for
+ * free blocks.  F and C as from bl_solution_resultants. */
+void bl_solution_reactions(const bl_solution *s, const bl_vec3 *F, const bl_vec3 *C, bl_vec3 *R, double *M);
+
 /* 3D: whether vertex e of interface k's contact polygon stays closed (its
  * relative velocity counts as zero), after bl_solution_classify. */
 int bl_solution_closed3(const bl_solution *s, int k, int e);

@@ -94,4 +94,38 @@ load { direction = { 1, 1 } }
 T.near(solve { flow = "associative" }.alpha, math.sqrt(2) / 3, 1e-9,
        "load{ direction = {1, 1} } alone: alpha = sqrt(2) / 3")
 
+-- Reactions and centres of pressure.  A pier 0.5 x 1.5 (W = 0.75) rocking
+-- at alpha = 1/3 pushes its support with (alpha W, -W), its whole weight at
+-- the toe (0.5, 0): a moment about the origin of 0.5 (-W).
+model { mu = 0.6 }
+block { vertices = { { 0, 0 }, { 0.5, 0 }, { 0.5, 1.5 }, { 0, 1.5 } } }
+local ground = block { vertices = { { -0.5, -0.3 }, { 1, -0.3 }, { 1, 0 }, { -0.5, 0 } }, support = true }
+local rp = solve {}
+local Rp, at = rp.reactions[ground], rp.interfaces[1].at
+T.ok(math.abs(Rp.force[1] - 0.25) < 1e-9 and math.abs(Rp.force[2] + 0.75) < 1e-9 and
+     math.abs(Rp.moment + 0.375) < 1e-9 and math.abs(at[1] - 0.5) < 1e-9 and math.abs(at[2]) < 1e-9,
+     "rocking pier: reaction (alpha W, -W), moment -0.375 about the origin, the thrust at the toe (tolerance 1e-9)",
+     ("%g %g %g at %g %g"):format(Rp.force[1], Rp.force[2], Rp.moment, at[1], at[2]))
+-- W4 at collapse: the reactions balance every load, the weights W_i at
+-- the centroids c_i and alpha W_i along +x: sum R = (alpha sum W, -sum W),
+-- sum M = sum W_i (alpha (-c_i,y) - c_i,x) (z of c x F).
+do
+  local m = model { mu = 0.65 }
+  wall { courses = require("walls").W4, unit = { 0.4, 0.175 } }
+  local r = solve { progress = false }
+  local W, Mw = 0, 0
+  for i = 1, stats().blocks + stats().supports do
+    local b = m:block_info(i)
+    if not b.support then
+      W = W + b.weight
+      Mw = Mw + b.weight * (r.alpha * -b.centroid[2] - b.centroid[1])
+    end
+  end
+  local fx, fy, M = 0, 0, 0
+  for _, R in pairs(r.reactions) do fx, fy, M = fx + R.force[1], fy + R.force[2], M + R.moment end
+  T.ok(math.abs(fx - r.alpha * W) < 1e-9 * W and math.abs(fy + W) < 1e-9 * W and math.abs(M - Mw) < 1e-9 * W,
+       "W4: the reactions balance the dead and live loads, forces and moments (tolerance 1e-9 W)",
+       ("%g %g %g against %g %g %g"):format(fx, fy, M, r.alpha * W, -W, Mw))
+end
+
 T.done()

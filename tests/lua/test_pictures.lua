@@ -269,4 +269,22 @@ do
        ("%d marked, %d moving, %d slower"):format(marked, moving, slow))
   os.remove(svg)
 end
+-- A face that lies wholly against a block it moves with cannot be seen,
+-- and is not painted: two unit cubes stacked on a slab overturn together
+-- at alpha = b/h = 0.5, their joint closed; of their twelve faces five
+-- face the default view and show (each stroked in the blocks' edge
+-- colour), not the lower cube's top, which was painted and then covered
+-- (from 45 degrees it showed through as triangles at a wall's head joints).
+do
+  model { dim = 3, mu = 0.65 }
+  box { size = { 3, 3, 0.3 }, at = { 0, 0, -0.3 }, support = true }
+  box { size = { 1, 1, 1 } }
+  box { size = { 1, 1, 1 }, at = { 0, 0, 1 } }
+  local rs = solve { progress = false }
+  rs:svg(svg)
+  local faces = strokes(svg, "33%,17%,10%")
+  T.ok(math.abs(rs.alpha - 0.5) < 1e-9 and faces == 5,
+       "two cubes overturning together: five faces painted, their joint's two hidden", ("%d faces"):format(faces))
+  os.remove(svg)
+end
 T.done()

@@ -856,4 +856,35 @@ T.raises(function() bond { length = 6, courses = 2, unit = { 0.4, 0.1 }, opening
 model {}
 T.raises(function() block { points = cube } end, "points in a 2D model are refused", "block", "3D")
 T.raises(function() box { size = { 1, 1, 1 } } end, "box in a 2D model is refused", "box", "dim = 3")
+-- The sequence on pyramids of 6 and 10 facets: a 1 x 1 x 0.2 box sliding
+-- on a slab at mu = 0.4 certifies the pyramid's answer.  Inscribed (an edge
+-- along x): mu along x, mu cos(pi / k) at 180 / k degrees, midway between
+-- two edges; circumscribed (a side across x): mu along x, mu / cos(pi / k)
+-- at 180 / k degrees, along an edge.  Its fixed LPs' polygon was turned
+-- half a facet from the pyramid, and no start certified in 1,500 LPs.
+for _, k in ipairs { 6, 10 } do
+  for _, kind in ipairs { "inscribed", "circumscribed" } do
+    for _, th in ipairs { 0, 180 / k } do
+      model { dim = 3, mu = 0.4 }
+      box { size = { 4, 4, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+      box { size = { 1, 1, 0.2 } }
+      load { live = "horizontal", direction = { math.cos(math.rad(th)), math.sin(math.rad(th)) } }
+      local c = math.cos(math.pi / k)
+      local want = th == 0 and 0.4 or kind == "inscribed" and 0.4 * c or 0.4 / c
+      local rk = solve { cone = { facets = k, kind = kind }, progress = false }
+      T.ok(rk.certified and rk.verified and math.abs(rk.alpha - want) <= 1e-9,
+           ("box sliding at %g degrees on %d facets %s: certified %.6f (tolerance 1e-9)"):format(th, k, kind, want),
+           ("%s %s"):format(rk.status, tostring(rk.alpha)))
+    end
+  end
+end
+-- A direction along y to round-off, {cos(pi / 2), 1}: the same answer as
+-- {0, 1} (its 6e-17 stopped every certificate on 4 facets inscribed).
+model { dim = 3, mu = 0.4 }
+box { size = { 4, 4, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+box { size = { 1, 1, 0.2 } }
+load { live = "horizontal", direction = { math.cos(math.pi / 2), 1 } }
+local ry = solve { cone = { facets = 4, kind = "inscribed" }, progress = false }
+T.ok(ry.certified and math.abs(ry.alpha - 0.4) <= 1e-9, "a box loaded along {cos(pi/2), 1}: certified mu = 0.4",
+     ("%s %s"):format(ry.status, tostring(ry.alpha)))
 T.done()
