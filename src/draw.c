@@ -34,6 +34,8 @@ static const rgb HINGE = {0.84, 0.09, 0.09};
 static const rgb HINGE_EDGE = {0.45, 0.02, 0.02};
 static const rgb SLIDING = {0.11, 0.38, 0.82};
 static const rgb SEPARATING = {0.96, 0.52, 0.03};
+static const rgb DEAD_LOAD = {0.30, 0.30, 0.30};
+static const rgb LIVE_LOAD = {0.50, 0.12, 0.50};
 
 /* Everything the drawing needs, worked out before the surface exists because
  * the canvas height depends on it. */
@@ -688,6 +690,51 @@ static void draw3(cairo_t *cr, const pic *P)
     free(hidden);
 }
 
+/* Every point load as an arrow ending where it acts (on its block as
+ * moved), along its force, of one length (not to scale): dead grey, live
+ * purple.  A couple alone, or a force along the line of sight, has none. */
+static void load_arrows(cairo_t *cr, const pic *P)
+{
+    const bl_model *m = P->m;
+    double len = 0.06 * P->w, head = fmax(3.0, 5.0 * P->mark);
+    for (int l = 0; l < m->nloads; l++) {
+        const bl_point_load *pl = &m->loads[l];
+        bl_vec2 at, ahead;
+        if (P->dim == 3) {
+            bl_vec3 p = moved3(P, pl->block, pl->at3);
+            at = dev(P, project(P, p));
+            ahead = dev(P, project(P, bl_v3_add(p, bl_v3_unit(pl->force3))));
+        } else {
+            at = dev(P, moved(P, pl->block, pl->at));
+            ahead = dev(P, bl_v2_add(moved(P, pl->block, pl->at), bl_v2_unit(pl->force)));
+        }
+        bl_vec2 d = bl_v2_sub(ahead, at);
+        double n = bl_v2_norm(d);
+        if (!(n > 1e-9 * P->sc)) continue;
+        d = bl_v2_scale(d, 1.0 / n);
+        /* shorter where the canvas ends (a load on a wall's top) */
+        double fit = len;
+        if (d.x > 0.0) fit = fmin(fit, at.x / d.x);
+        if (d.x < 0.0) fit = fmin(fit, (at.x - P->w) / d.x);
+        if (d.y > 0.0) fit = fmin(fit, at.y / d.y);
+        if (d.y < 0.0) fit = fmin(fit, (at.y - P->h) / d.y);
+        fit = fmax(fit, 3.0 * head);
+        bl_vec2 tail = bl_v2_sub(at, bl_v2_scale(d, fit)), base = bl_v2_sub(at, bl_v2_scale(d, 2.0 * head));
+        bl_vec2 side = bl_v2(-d.y * head, d.x * head);
+        color(cr, pl->live ? LIVE_LOAD : DEAD_LOAD);
+        cairo_new_path(cr);
+        cairo_move_to(cr, tail.x, tail.y);
+        cairo_line_to(cr, base.x, base.y);
+        cairo_set_line_width(cr, 0.5 * head);
+        cairo_stroke(cr);
+        cairo_move_to(cr, at.x, at.y);
+        cairo_line_to(cr, base.x + side.x, base.y + side.y);
+        cairo_line_to(cr, base.x - side.x, base.y - side.y);
+        cairo_close_path(cr);
+        cairo_fill(cr);
+    }
+}
+
 static void draw(cairo_t *cr, const pic *P)
 {
     cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
@@ -753,6 +800,7 @@ static void draw(cairo_t *cr, const pic *P)
                 }
         }
     }
+    if (m) load_arrows(cr, P);
 
     color(cr, INK);
     cairo_move_to(cr, P->margin, P->caption_y);

@@ -287,4 +287,25 @@ do
        "two cubes overturning together: five faces painted, their joint's two hidden", ("%d faces"):format(faces))
   os.remove(svg)
 end
+-- Point loads are drawn as arrows, one per load: a live one purple, a
+-- dead one grey (a stroke each, for its shaft), in 2D and 3D.
+do
+  model { mu = 0.6 }
+  block { vertices = { { 0, 0 }, { 0.5, 0 }, { 0.5, 1.5 }, { 0, 1.5 } } }
+  block { vertices = { { -0.5, -0.3 }, { 1, -0.3 }, { 1, 0 }, { -0.5, 0 } }, support = true }
+  load { live = "none" }
+  load { live = { block = 1, at = { 0, 1.2 }, force = { 1, 0 } } }
+  load { dead = { block = 1, at = { 0.25, 1.5 }, force = { 0, -2 } } }
+  solve { progress = false }:svg(svg)
+  local live, dead = strokes(svg, "50%,12%,50%"), strokes(svg, "30%,30%,30%")
+  T.ok(live == 1 and dead == 1, "2D point loads: one purple arrow, one grey", ("%d live, %d dead"):format(live, dead))
+  model { dim = 3, mu = 0.6 }
+  box { size = { 3, 3, 0.3 }, at = { 0, 0, -0.3 }, support = true }
+  box { size = { 1, 1, 2 } }
+  load { live = "none" }
+  load { live = { block = 2, at = { 0.5, 0, 1.5 }, force = { 1, 0, 0 } } }
+  solve { progress = false }:svg(svg)
+  T.eq(strokes(svg, "50%,12%,50%"), 1, "3D point load: one purple arrow")
+  os.remove(svg)
+end
 T.done()
