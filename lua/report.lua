@@ -49,6 +49,9 @@ function Result.__tostring(r)
     if r.alpha_assoc == math.huge and r.status == "unbounded" then
       say("  the associative LP and the one without friction are both unbounded: no mechanism")
       say("  moves, with dilatancy or without (%d LPs in the sequence)", r.lps)
+    elseif r.alpha_assoc ~= r.alpha_assoc and r.status == "infeasible" then
+      say("  the associative LP, where the sequence starts, has no equilibrium either: no LP of the")
+      say("  sequence ran")
     elseif r.alpha_assoc ~= r.alpha_assoc then
       say("  the associative LP, where the sequence starts, stopped first: no LP of the sequence ran")
     elseif r.alpha_assoc == math.huge and r.status == "unstable" and r.alpha == math.huge then

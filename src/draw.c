@@ -573,10 +573,6 @@ static void support_keys(const pic *P, face3 *F, int n, const int *face_off, dou
     }
 }
 
-/* 3D: the blocks as moved by the mechanism, seen along the view: faces
- * turned away are dropped, the others painted far to near, shaded by how
- * squarely they face the light (from the viewer's upper left); supports
- * grey, moving blocks terracotta, still ones pale. */
 /* Faces that lie wholly against neighbours they move with: the contact
  * polygons on them, of joints that do not visibly move, cover their area.
  * They cannot be seen, and painted in the order of their depths the top
@@ -618,6 +614,10 @@ static void hidden_faces(const pic *P, const int *face_off, char *hidden)
     free(covered);
 }
 
+/* 3D: the blocks as moved by the mechanism, seen along the view: faces
+ * turned away are dropped, the others painted far to near, shaded by how
+ * squarely they face the light (from the viewer's upper left); supports
+ * grey, moving blocks terracotta, still ones pale. */
 static void draw3(cairo_t *cr, const pic *P)
 {
     const bl_model *m = P->m;

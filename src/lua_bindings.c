@@ -160,16 +160,25 @@ static bl_vec2 to_point(lua_State *L, const char *fn, const char *what)
  * list at 3 without a word. */
 static int list_length(lua_State *L, const char *fn, const char *what)
 {
-    int n = (int)lua_rawlen(L, -1), count = 0;
+    int n = (int)lua_rawlen(L, -1), count = 0, other = 0;
+    lua_Integer top = 0;
     lua_pushnil(L);
     while (lua_next(L, -2)) {
         lua_pop(L, 1);
         count++;
+        if (lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 1) {
+            if (lua_tointeger(L, -1) > top) top = lua_tointeger(L, -1);
+        } else {
+            other = 1;
+        }
     }
-    if (count != n)
-        fail(L, "%s: %s must be a list of entries 1 to n with none missing; it has %d entries but no "
-                "entry %d", fn, what, count, n + 1);
-    return n;
+    if (count == n && top == n && !other) return n;
+    if (other) return fail(L, "%s: %s must be a list of entries 1 to n, without other keys", fn, what);
+    lua_Integer missing = 1; /* the first of 1..top that is not there */
+    while (lua_rawgeti(L, -1, missing) != LUA_TNIL && missing < top) lua_pop(L, 1), missing++;
+    lua_pop(L, 1);
+    return fail(L, "%s: %s must be a list of entries 1 to n; entry %lld is missing", fn, what,
+                (long long)missing);
 }
 
 /* The point {x, y, z} on the top of the stack (popped). */
@@ -707,7 +716,7 @@ static int load_3d(lua_State *L, bl_model *m)
         if (bl_v3_norm(dir) == 0) fail(L, "load: field 'direction' must be a non-zero vector");
     }
     apply_loads(L, m, kinds, pl);
-    if (kinds[1] == 0 || field_given(L, 2, "direction")) m->live_dir3 = bl_v3_unit(dir);
+    if (kinds[1] == 0 || field_given(L, 2, "direction")) m->live_dir3 = dir;
     if (!isnan(tilt)) {
         m->tilt = tilt * M_PI / 180.0;
         m->tilt_axis = bl_v2_unit(axis);
@@ -1267,6 +1276,12 @@ static int model_solve(lua_State *L)
     *box = NULL;
     luaL_setmetatable(L, SOLUTION_MT);
     int sidx = lua_gettop(L);
+    bl_solution **dead = lua_newuserdatauv(L, sizeof *dead, 0); /* r.dead, where infeasible */
+    *dead = NULL;
+    luaL_setmetatable(L, SOLUTION_MT);
+    lua_pushvalue(L, sidx); /* the answer's box on top, for push_result */
+    lua_remove(L, sidx);
+    sidx = lua_gettop(L);
     bl_error err;
     struct sigaction sa, old;
     memset(&sa, 0, sizeof sa);
@@ -1281,25 +1296,25 @@ static int model_solve(lua_State *L)
     int rc = method == MPEC    ? bl_mpec_solve(m, &mo, box, &err)
              : method == SEQLP ? bl_seqlp_solve(m, &so, box, &err)
                                : bl_assoc_solve(m, &o, box, &err);
+    /* why no equilibrium: the dead load alone, as r.dead (Ctrl-C stops it
+     * too; an error or a stop leaves r.dead out) */
+    int dead_load = m->self_weight;
+    for (int l = 0; l < m->nloads; l++) dead_load |= !m->loads[l].live;
+    bl_error derr;
+    if (rc == 0 && (*box)->status == BL_INFEASIBLE && dead_load && !bl_interrupt_pending() &&
+        bl_assoc_dead_alone(m, &o, dead, &derr) == 0 && (*dead)->status == BL_INTERRUPTED) {
+        bl_solution_free(*dead);
+        *dead = NULL;
+    }
     sigaction(SIGINT, &old, NULL);
     if (rc) return fail(L, "%s", err.msg);
     const bl_solution *s = *box;
     if (s->status == BL_INTERRUPTED && !s->interrupted)
         return fail(L, "solve: interrupted (Ctrl-C); the model is as it was");
     push_result(L, s, sidx);
-    int dead_load = m->self_weight;
-    for (int l = 0; l < m->nloads; l++) dead_load |= !m->loads[l].live;
-    if (s->status == BL_INFEASIBLE && dead_load) {
-        /* why no equilibrium: the dead load alone, as r.dead */
-        int t = lua_gettop(L);
-        bl_solution **dead = lua_newuserdatauv(L, sizeof *dead, 0);
-        *dead = NULL;
-        luaL_setmetatable(L, SOLUTION_MT);
-        if (bl_assoc_dead_alone(m, &o, dead, &err) == 0) {
-            push_result(L, *dead, t + 1);
-            lua_setfield(L, t, "dead");
-        }
-        lua_settop(L, t);
+    if (*dead) {
+        push_result(L, *dead, sidx - 1);
+        lua_setfield(L, -2, "dead");
     }
     lua_pushvalue(L, -1);
     lua_setfield(L, LUA_REGISTRYINDEX, LAST_RESULT);

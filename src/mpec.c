@@ -823,7 +823,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     }
     /* no answer: a point Ipopt did not converge to, or one the residuals
      * reject (its alpha stays in alpha_ipopt) */
-    if ((!converged || s->status == BL_NOT_COMPLEMENTARY) && !s->kept_start) s->alpha = NAN;
+    if ((!converged && !s->kept_start) || s->status == BL_NOT_COMPLEMENTARY) s->alpha = NAN;
     const double *end = s->kept_start ? v0 : v;
     s->pair_sum = 0.0;
     for (int k = 0; k < p.npairs; k++) s->pair_sum += fabs(end[p.pa[k]] * end[p.pb[k]]);

@@ -822,8 +822,8 @@ static bl_system *rigid_system(const bl_model *m, const bl_cone *pyramid, bl_err
  * zero is unbounded).  Such forces x_L give every mechanism u, in any flow
  * rule, a live work f_L . u = -x_L . (A^T u) <= 0, for they push only
  * where the joints close: no mechanism moves, and alpha is infinite
- * whether the joints dilate or not.  1 yes, 0 no or not decided, -1 out
- * of memory. */
+ * whether the joints dilate or not.  1 yes, 0 no or not decided, -1 with
+ * err set (out of memory, or an LP that could not be made). */
 static int live_on_normals(const bl_model *m, const bl_cone *pyramid, const bl_solve_options *o,
                            bl_error *err)
 {
@@ -832,6 +832,7 @@ static int live_on_normals(const bl_model *m, const bl_cone *pyramid, const bl_s
     double *n = calloc((size_t)f->npoints + 1, sizeof *n);
     double *lo = malloc((size_t)f->ncols * sizeof *lo), *hi = malloc((size_t)f->ncols * sizeof *hi);
     int yes = -1;
+    if (!n || !lo || !hi) bl_error_set(err, "solve: out of memory");
     if (n && lo && hi) {
         bl_system_fixed_bounds(f, n, lo, hi);
         for (int i = 0; i < f->nrows; i++) f->rhs[i] = 0.0;
@@ -1202,7 +1203,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
              * alpha searches too, whatever unlimited friction gives: a
              * 104-block wall at mu = 1.2 certified its associative 1.0276
              * (unlimited friction: 3.69), where 3 restarts found 0.3809. */
-            int at_assoc = r.found && r.best_alpha >= s->alpha_assoc * (1.0 - o->settle);
+            int at_assoc = r.found && r.best_alpha >= s->alpha_assoc - o->settle * fabs(s->alpha_assoc);
             int search = s->assoc_is_solution || at_assoc ||
                          (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS);
             retry = sliding && o->starts < 0 && !search && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
@@ -1241,9 +1242,13 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     }
     if (stop == BL_LP_TIME_LIMIT && r.found) {
         s->time_up = 1;
-        snprintf(s->note, sizeof s->note,
-                 "the time limit ended the search in start %d of %d (%d LPs): lower answers may exist",
-                 s->nstarts, starts + 1, s->lps);
+        if (s->start[s->nstarts - 1].continues)
+            snprintf(s->note, sizeof s->note, "the time limit ended the search in start 1 going on after "
+                     "the restarts (%d LPs): lower answers may exist", s->lps);
+        else
+            snprintf(s->note, sizeof s->note,
+                     "the time limit ended the search in start %d of %d (%d LPs): lower answers may exist",
+                     s->nstarts, starts + 1, s->lps);
     }
     if (r.found) {
         s->alpha = r.best_alpha;

@@ -79,7 +79,8 @@ typedef struct bl_solution {
     int has_mechanism;       /* u, state and hinge are meaningful */
     double *u;               /* 3 per block: vx, vy, omega (1/force units,
                                 live load does unit work); 0 for supports */
-    double *force;           /* 4 per interface: n0, t0, n1, t1 at p[0], p[1] */
+    double *force;           /* 2D, 4 per interface: n0, t0, n1, t1 at p[0], p[1];
+                                3D, 3 per polygon vertex: n, t2, t3 */
     /* the scaled answer on the Coulomb-cone system (assemble.h), owned,
      * NULL when there is none: its columns (forces, then alpha) and its
      * row multipliers (the mechanism); a start for another method */

@@ -3,12 +3,22 @@
 #include <math.h>
 #include <stdlib.h>
 
-/* Forces below this (in units of W0) set no scale for the products of
- * complementarity: an answer that carries no load (alpha = 0 with the dead
- * load made the live one) has forces of round-off, 1e-13, and products
- * measured against them read 0.07 (a force in a model that carries its
- * loads is rarely below a tenth of W0). */
+/* An answer that carries no load: alpha 0 to round-off where the live load
+ * is the only one (the dead load made the live one, r.dead, in a model that
+ * carries none of it).  Its forces are round-off too, 1e-13: its blocks'
+ * scales take the live load once, not as light blocks (their residuals
+ * read 1e-4), and its products are measured against forces of at least
+ * FORCE_FLOOR W0 (against 1e-13 they read 0.07). */
+#define ALPHA_ZERO 1e-9
 #define FORCE_FLOOR 1e-2
+
+static int unloaded(const bl_system *s, double alpha)
+{
+    if (fabs(alpha) > ALPHA_ZERO) return 0;
+    for (int i = 0; i < s->nrows; i++)
+        if (s->rhs[i] != 0.0) return 0;
+    return 1;
+}
 
 /* Normalization and the virtual-work balance: the static alpha equals the
  * kinematic one, (dissipation - fD . u) / fL . u, relative to the larger
@@ -40,11 +50,7 @@ static void equilibrium(const bl_system *s, const double *x, double alpha, doubl
     bl_system_residual(s, x, alpha, r);
     for (int i = 0; i < s->nrows; i++) S[i] = fabs(s->rhs[i]);
     for (int j = 0; j < s->ncols; j++) {
-        /* the live load counts at least once: an answer at alpha = 0 (the
-         * dead load made the live one, in a model that carries none of
-         * it) has no loads and forces but round-off, and is not a model
-         * of light blocks */
-        double xj = j < s->nforce ? x[j] : fmax(fabs(alpha), 1.0);
+        double xj = j < s->nforce ? x[j] : unloaded(s, alpha) ? 1.0 : alpha;
         for (int p = s->colptr[j]; p < s->colptr[j + 1]; p++) S[s->rowind[p]] += fabs(s->val[p] * xj);
     }
     int rows = s->dim == 3 ? 6 : 3; /* a block's, one after the other */
@@ -95,7 +101,8 @@ int bl_verify(const bl_system *s, double alpha, const double *x, const double *y
         X = fmax(X, fabs(x[j]));
     }
     free(S);
-    X = fmax(X, FORCE_FLOOR);
+    if (unloaded(s, alpha)) X = fmax(X, FORCE_FLOOR);
+    if (X == 0.0) X = 1.0;
 
     /* Kinematics: w_j = (A^T y)_j is the power of a unit value of column j,
      * the relative velocity along the column's force direction.  V is the
@@ -181,7 +188,8 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         power[p] = 0.0;
         h[p] = d3 ? -INFINITY : 0.0;
     }
-    X = fmax(X, FORCE_FLOOR);
+    if (unloaded(cone, alpha)) X = fmax(X, FORCE_FLOOR);
+    if (X == 0.0) X = 1.0;
     /* the speed of every joint (with its twist) and the velocity scale V.
      * 3D: the tangential power of a cone column, along, is its power less
      * its normal part; the friction's dissipation is N times the most a

@@ -216,7 +216,7 @@ do
   -- a list of vertices with one left out was cut short silently
   model {}
   T.raises(function() block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, [5] = { 0, 1 } } } end,
-           "vertices with point 4 left out refused", "block: field 'vertices' must be a list", "no entry 4")
+           "vertices with point 4 left out refused", "block: field 'vertices' must be a list", "entry 4 is missing")
   -- extrude{} names its own fields
   model { dim = 3 }
   T.raises(function() extrude { polygon = { { 0, 0 }, { 1, 0 }, { 1, 0 / 0 } }, to = 1 } end,
