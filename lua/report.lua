@@ -46,7 +46,10 @@ function Result.__tostring(r)
   end
   if r.alpha_assoc then
     local last = r.certified and not r.interrupted and not r.time_up and ", the last one its certificate" or ""
-    if r.alpha_assoc == math.huge and r.status == "unbounded" then
+    if r.live_scales_dead then
+      say("  the live load is the self weight along gravity: at every alpha the problem is the dead")
+      say("  load's, scaled, and the structure carries it; no collapse, with dilatancy or without")
+    elseif r.alpha_assoc == math.huge and r.status == "unbounded" then
       say("  the associative LP and the one without friction are both unbounded: no mechanism")
       say("  moves, with dilatancy or without (%d LPs in the sequence)", r.lps)
     elseif r.alpha_assoc ~= r.alpha_assoc and r.status == "infeasible" then

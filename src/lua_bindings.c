@@ -970,6 +970,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         set_boolean(L, "certified", s->certified);
         set_boolean(L, "interrupted", s->interrupted);
         set_boolean(L, "time_up", s->time_up);
+        if (s->live_scales_dead) set_boolean(L, "live_scales_dead", 1);
         set_integer(L, "lps", s->lps);
         set_number(L, "slip", s->slip);
         if (s->path_steps > 0) {

@@ -817,6 +817,15 @@ static bl_system *rigid_system(const bl_model *m, const bl_cone *pyramid, bl_err
     return s;
 }
 
+/* Whether the live load is the self weight along gravity, and nothing else
+ * loads the model. */
+static int live_scales_dead(const bl_model *m)
+{
+    if (!m->self_weight || !m->live_weight || m->nloads > 0) return 0;
+    if (m->dim == 3) return bl_v3_norm(bl_v3_sub(m->live_dir3, bl_model_gravity3(m))) < 1e-12;
+    return bl_v2_norm(bl_v2_sub(m->live_dir, bl_model_gravity(m))) < 1e-12;
+}
+
 /* Whether normal forces alone carry the live load (no friction, no dead
  * load: the fixed LP without capacities and with a right-hand side of
  * zero is unbounded).  Such forces x_L give every mechanism u, in any flow
@@ -1041,6 +1050,22 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
      * start from: that result is returned as it is. */
     int locked = sliding && s->status == BL_UNBOUNDED;
     if (locked) path_free(&pj); /* it has no answer either: start 0 from no forces */
+    if (locked && s->stands == 1 && live_scales_dead(m)) {
+        /* A live load that is the self weight along gravity (a vertical
+         * acceleration): at every alpha the problem is the dead load's
+         * scaled by 1 + alpha, which the structure carries, so nothing
+         * collapses, with dilatancy or without.  (The sequence certified
+         * alpha = -1 on an arch, where no load is left and any mechanism
+         * fits zero forces.) */
+        s->method = "seqlp";
+        s->flow = "nonassociative";
+        s->alpha_assoc = INFINITY;
+        s->alpha_rigid = NAN;
+        s->live_scales_dead = 1;
+        s->verified = 0;
+        *out = s;
+        return 0;
+    }
     if ((!sliding && o->when_sliding) ||
         (!locked && ((s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) || !s->has_mechanism))) {
         path_free(&pj);

@@ -119,6 +119,8 @@ typedef struct bl_solution {
     int certified;           /* a certificate LP accepted (alpha, x, u) */
     int interrupted;         /* Ctrl-C ended the search early */
     int time_up;             /* the time limit ended it, after an answer */
+    int live_scales_dead;    /* the live load is the self weight along
+                                gravity: unbounded where it stands */
     double slip;             /* the slip threshold used, relative */
     int lps;                 /* LPs solved (all kinds) */
     int nhistory;

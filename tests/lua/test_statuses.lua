@@ -425,4 +425,20 @@ do
        r.dead and tostring(r.dead.alpha) or r.status)
   T.ok(tostring(r):find("carries at most 0.416333 times it", 1, true), "infeasible with cohesion: print(r) gives the part carried")
 end
+-- A live load that is the self weight along gravity (a vertical
+-- acceleration): at every alpha the problem is the dead load's scaled by
+-- 1 + alpha, so an arch that stands under its weight never collapses, in
+-- either flow.  The sequence certified alpha = -1 ("unstable"), where no
+-- load is left and any mechanism fits zero forces.
+do
+  model { mu = 0.6 }
+  arch { n = 9, radius = 1, thickness = 0.3 }
+  load { live = "horizontal", direction = { 0, -1 } }
+  for _, flow in ipairs { "associative", "nonassociative" } do
+    local r = solve { flow = flow, progress = false }
+    T.ok(r.status == "unbounded" and r.alpha == math.huge and r.stands == true,
+         ("arch under a vertical acceleration, %s: unbounded, it stands"):format(flow),
+         ("%s %s %s"):format(r.status, tostring(r.alpha), tostring(r.stands)))
+  end
+end
 T.done()
