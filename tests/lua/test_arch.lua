@@ -84,4 +84,17 @@ arch { n = 2000, radius = 1, thickness = 0.15 }
 local a2k = solve { progress = false }
 T.ok(a2k.certified and a2k.verified, "2,000 voussoirs, mu = 0.6: certified and verified", a2k.status)
 T.near(a2k.alpha, solve { flow = "associative" }.alpha, 1e-7, "2,000 voussoirs, mu = 0.6: the associative alpha")
+-- 1,500 voussoirs at mu = inf, by default: the interior point lost its
+-- round-off ("numerical trouble", no answer); an arch is a chain, whose LP
+-- the simplex solves in seconds, so it is solved again there: verified,
+-- and the alpha of a solve on the simplex from the start.
+do
+  model { mu = math.huge }
+  arch { n = 1500, radius = 5, thickness = 1 }
+  local r = solve { progress = false }
+  local rs = solve { lp = "simplex", progress = false }
+  T.ok(r.verified and math.abs(r.alpha - rs.alpha) <= 1e-8,
+       "1,500 voussoirs, mu = inf, by default: verified, the simplex's alpha (tolerance 1e-8)",
+       ("%s %s %s"):format(r.status, tostring(r.alpha), tostring(rs.alpha)))
+end
 T.done()
