@@ -11,6 +11,7 @@
 #define DEFAULT_WIDTH 1000
 #define SHOW_FRACTION 0.08  /* largest drawn displacement / model size */
 #define STILL_FRACTION 0.01 /* blocks moving less than this share look still */
+#define THIN_BLOCK 2.0      /* px: blocks thinner than this on average get no outlines */
 #define MAX_ASPECT 2.0      /* a tall model is shrunk rather than drawn taller */
 #define PNG_MAX_SIDE 32767  /* cairo's limit for image surfaces */
 
@@ -48,6 +49,8 @@ typedef struct pic {
     double unit;          /* line widths and text follow the picture width */
     double mark;          /* the joints' markers and the blocks' outlines: unit, less where
                              blocks are drawn small */
+    int outlines;         /* 2D: the blocks' outlines are drawn (not where they would
+                             cover blocks thinner than THIN_BLOCK) */
     double sc, x0, y0;    /* model (x, y) -> canvas (x0 + sc x, y0 - sc y) */
     double top, dh;       /* drawing area, canvas units */
     double font;
@@ -363,6 +366,24 @@ static void layout(pic *P, const bl_solution *s, int width, double azimuth, doub
     P->mark = P->unit;
     if (P->m)
         P->mark = fmin(P->unit, fmax(0.2 * P->unit, sqrt(dw * P->dh / P->m->nblocks) / 30.0));
+    /* 2D: no outlines on blocks thinner than THIN_BLOCK on average (their
+     * area over their longest edge), which outlines would cover: an arch
+     * of 3,000 voussoirs half a pixel thick was a dark band */
+    P->outlines = 1;
+    if (P->m && P->dim == 2) {
+        double thin = 0.0;
+        int n = 0;
+        for (int b = 0; b < P->m->nblocks; b++) {
+            const bl_block *B = &P->m->blocks[b];
+            if (B->support) continue;
+            double longest = 0.0;
+            for (int i = 0; i < B->nv; i++)
+                longest = fmax(longest, bl_v2_norm(bl_v2_sub(B->v[(i + 1) % B->nv], B->v[i])));
+            thin += longest > 0.0 ? B->area / longest : 0.0;
+            n++;
+        }
+        P->outlines = n == 0 || thin / n * P->sc >= THIN_BLOCK;
+    }
     const char *name = bl_status_name(s->status);
     /* as print(r) says: no alpha where a sequence found none or no live
      * load makes the structure collapse; an interval where only the live
@@ -754,7 +775,7 @@ static void draw(cairo_t *cr, const pic *P)
         draw3(cr, P);
     } else {
         const bl_solution *s = P->s;
-        if (P->k > 0.0) {
+        if (P->k > 0.0 && P->outlines) {
             for (int b = 0; b < m->nblocks; b++) {
                 if (m->blocks[b].support) continue;
                 block_path(cr, P, b, 0);
@@ -775,6 +796,10 @@ static void draw(cairo_t *cr, const pic *P)
             /* slightly see-through, so the outlines of the original
              * position stay visible under the moved blocks */
             cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, P->k > 0.0 ? 0.88 : 1.0);
+            if (!P->outlines) {
+                cairo_fill(cr);
+                continue;
+            }
             cairo_fill_preserve(cr);
             color(cr, BLOCK_EDGE);
             cairo_set_line_width(cr, 1.2 * P->mark);

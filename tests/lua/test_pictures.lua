@@ -308,4 +308,20 @@ do
   T.eq(strokes(svg, "50%,12%,50%"), 1, "3D point load: one purple arrow")
   os.remove(svg)
 end
+-- Blocks thinner than 2 px on average get no outlines, which would cover
+-- them (an arch of 3,000 voussoirs half a pixel thick was a dark band): an
+-- arch of 600 voussoirs, 0.026 thick along the ring, is 0.7 px thick 300
+-- px wide and 9 px thick 4,000 px wide.
+do
+  model { mu = math.huge }
+  arch { n = 600, radius = 5, thickness = 1 }
+  local ra = solve { progress = false }
+  ra:svg(svg, { width = 300 })
+  local narrow = strokes(svg, "33%,17%,10%")
+  ra:svg(svg, { width = 4000 })
+  local wide = strokes(svg, "33%,17%,10%")
+  T.ok(narrow == 0 and wide == 600, "600 voussoirs: no outlines 300 px wide, one per voussoir 4,000 px wide",
+       ("%d and %d outlines"):format(narrow, wide))
+  os.remove(svg)
+end
 T.done()
