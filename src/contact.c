@@ -363,6 +363,21 @@ oom:
     return bl_error_set(err, "contacts: out of memory");
 }
 
+/* Writes "contacts: <what>s 3, 7 and N more" into msg, naming the blocks
+ * i with mark[i] set (up to eight, "<what>" alone for one).  Returns how
+ * many are marked; msg is left alone when none is. */
+static int name_blocks(char *msg, size_t size, const char *what, const char *mark, int n)
+{
+    int total = 0, shown = 0;
+    for (int i = 0; i < n; i++) total += mark[i] != 0;
+    if (!total) return 0;
+    size_t len = (size_t)snprintf(msg, size, "contacts: %s%s", what, total > 1 ? "s" : "");
+    for (int i = 0; i < n && shown < 8 && len < size; i++)
+        if (mark[i]) len += (size_t)snprintf(msg + len, size - len, "%s %d", shown++ ? "," : "", i + 1);
+    if (total > shown && len < size) snprintf(msg + len, size - len, " and %d more", total - shown);
+    return total;
+}
+
 /* The root of block i's group of blocks joined by interfaces. */
 static int root(int *parent, int i)
 {
@@ -377,9 +392,9 @@ static int root(int *parent, int i)
 static int floating(const bl_model *m, char *msg, size_t size)
 {
     int n = m->nblocks, *parent = malloc((size_t)n * sizeof *parent);
-    char *grounded = calloc((size_t)n, 1);
-    if (!parent || !grounded) {
-        free(parent), free(grounded);
+    char *grounded = calloc((size_t)n, 1), *air = calloc((size_t)n, 1);
+    if (!parent || !grounded || !air) {
+        free(parent), free(grounded), free(air);
         return -1;
     }
     for (int i = 0; i < n; i++) parent[i] = i;
@@ -388,19 +403,14 @@ static int floating(const bl_model *m, char *msg, size_t size)
     int supports = 0;
     for (int i = 0; i < n; i++)
         if (m->blocks[i].support) grounded[root(parent, i)] = 1, supports++;
-    int total = 0, shown = 0;
-    for (int i = 0; i < n; i++) total += !m->blocks[i].support && !grounded[root(parent, i)];
-    size_t len = 0;
-    if (total) len = (size_t)snprintf(msg, size, "contacts: free block%s", total > 1 ? "s" : "");
-    for (int i = 0; i < n && shown < 8 && len < size; i++)
-        if (!m->blocks[i].support && !grounded[root(parent, i)])
-            len += (size_t)snprintf(msg + len, size - len, "%s %d", shown++ ? "," : "", i + 1);
-    if (total > shown && len < size) len += (size_t)snprintf(msg + len, size - len, " and %d more", total - shown);
+    for (int i = 0; i < n; i++) air[i] = !m->blocks[i].support && !grounded[root(parent, i)];
+    int total = name_blocks(msg, size, "free block", air, n);
+    size_t len = strlen(msg);
     if (total && len < size)
         snprintf(msg + len, size - len, " %s on no support, directly or through other blocks%s",
                  total > 1 ? "rest" : "rests",
                  supports ? "" : " (the model has none: make one with block{ ..., support = true })");
-    free(parent), free(grounded);
+    free(parent), free(grounded), free(air);
     return 0;
 }
 
@@ -448,20 +458,8 @@ int bl_contact_detect(bl_model *m, bl_error *err)
         if (!touched) goto oom;
         for (int k = 0; k < m->ninterfaces; k++)
             touched[m->interfaces[k].a] = touched[m->interfaces[k].b] = 1;
-        int lonely = 0, total = 0;
-        for (int i = 0; i < n; i++) total += !touched[i] && !m->blocks[i].support;
-        size_t len = 0;
-        for (int i = 0; i < n; i++) {
-            if (touched[i] || m->blocks[i].support) continue;
-            if (lonely == 0)
-                len = (size_t)snprintf(msg, sizeof msg, "contacts: no interface on free block%s",
-                                       total > 1 ? "s" : "");
-            if (lonely < 8 && len < sizeof msg)
-                len += (size_t)snprintf(msg + len, sizeof msg - len, "%s %d", lonely ? "," : "", i + 1);
-            lonely++;
-        }
-        if (lonely > 8 && len < sizeof msg)
-            snprintf(msg + len, sizeof msg - len, " and %d more", lonely - 8);
+        for (int i = 0; i < n; i++) touched[i] = !touched[i] && !m->blocks[i].support; /* lonely */
+        name_blocks(msg, sizeof msg, "no interface on free block", touched, n);
         free(touched);
     }
     if (!msg[0] && floating(m, msg, sizeof msg)) goto oom;
