@@ -919,11 +919,11 @@ static void push_thrust(lua_State *L, const bl_solution *s)
     const bl_model *m = s->model;
     size_t ni = (size_t)m->ninterfaces + 1, nb = (size_t)m->nblocks + 1;
     /* scratch, owned by Lua (an error cannot leak it) */
-    bl_vec3 *F = lua_newuserdatauv(L, (2 * ni + nb) * sizeof *F + (ni + nb) * sizeof(double), 0);
-    bl_vec3 *C = F + ni, *R = C + ni;
-    double *N = (double *)(R + nb), *M = N + ni;
+    bl_vec3 *F = lua_newuserdatauv(L, (2 * ni + 2 * nb) * sizeof *F + ni * sizeof(double), 0);
+    bl_vec3 *C = F + ni, *R = C + ni, *M = R + nb;
+    double *N = (double *)(M + nb);
     bl_solution_resultants(s, F, N, C);
-    bl_solution_reactions(s, F, C, R, M);
+    bl_solution_reactions(s, R, M);
     lua_createtable(L, 0, 4);
     for (int i = 0; i < m->nblocks; i++) {
         if (!m->blocks[i].support) continue;
@@ -931,7 +931,12 @@ static void push_thrust(lua_State *L, const bl_solution *s)
         if (m->dim == 3) push_triple(L, R[i]);
         else push_pair(L, R[i].x, R[i].y);
         lua_setfield(L, -2, "force");
-        if (m->dim == 2) set_number(L, "moment", M[i]);
+        if (m->dim == 3) {
+            push_triple(L, M[i]);
+            lua_setfield(L, -2, "moment");
+        } else {
+            set_number(L, "moment", M[i].z);
+        }
         lua_rawseti(L, -2, i + 1);
     }
     lua_setfield(L, -3, "reactions");

@@ -247,6 +247,28 @@ void bl_solution_classify(bl_solution *s)
     }
 }
 
+/* Point e of interface k (e < 2 in 2D): where it lies (p) and the force
+ * that a exerts on b there, from its normal and shear(s) at f; returns f
+ * past them. */
+static const double *point_force(const bl_model *m, const bl_interface *in, int e, const double *f,
+                                 bl_vec3 *p, bl_vec3 *nrm, bl_vec3 *fe)
+{
+    if (m->dim == 3) {
+        *p = in->poly[e];
+        *nrm = in->n3;
+        *fe = bl_v3_add(bl_v3_scale(in->n3, f[0]),
+                        bl_v3_add(bl_v3_scale(in->t2, f[1]), bl_v3_scale(in->t3, f[2])));
+        return f + 3;
+    }
+    *p = bl_v3(in->p[e].x, in->p[e].y, 0.0);
+    *nrm = bl_v3(in->normal.x, in->normal.y, 0.0);
+    bl_vec3 tau = bl_v3(-in->normal.y, in->normal.x, 0.0);
+    *fe = bl_v3_add(bl_v3_scale(*nrm, f[0]), bl_v3_scale(tau, f[1]));
+    return f + 2;
+}
+
+static int npoints(const bl_model *m, const bl_interface *in) { return m->dim == 3 ? in->np : 2; }
+
 void bl_solution_resultants(const bl_solution *s, bl_vec3 *F, double *N, bl_vec3 *C)
 {
     const bl_model *m = s->model;
@@ -255,23 +277,10 @@ void bl_solution_resultants(const bl_solution *s, bl_vec3 *F, double *N, bl_vec3
         const bl_interface *in = &m->interfaces[k];
         bl_vec3 force = {0, 0, 0}, moment = {0, 0, 0}, mid = {0, 0, 0};
         double n = 0.0;
-        int np = m->dim == 3 ? in->np : 2;
+        int np = npoints(m, in);
         for (int e = 0; e < np; e++) {
-            /* normal and shear(s) at point e: 3 numbers in 3D, 2 in 2D */
             bl_vec3 p, nrm, fe;
-            if (m->dim == 3) {
-                p = in->poly[e];
-                nrm = in->n3;
-                fe = bl_v3_add(bl_v3_scale(in->n3, f[0]),
-                               bl_v3_add(bl_v3_scale(in->t2, f[1]), bl_v3_scale(in->t3, f[2])));
-                f += 3;
-            } else {
-                p = bl_v3(in->p[e].x, in->p[e].y, 0.0);
-                nrm = bl_v3(in->normal.x, in->normal.y, 0.0);
-                bl_vec3 tau = bl_v3(-in->normal.y, in->normal.x, 0.0);
-                fe = bl_v3_add(bl_v3_scale(nrm, f[0]), bl_v3_scale(tau, f[1]));
-                f += 2;
-            }
+            f = point_force(m, in, e, f, &p, &nrm, &fe);
             double ne = bl_v3_dot(fe, nrm);
             force = bl_v3_add(force, fe);
             moment = bl_v3_add(moment, bl_v3_scale(p, ne));
@@ -284,23 +293,24 @@ void bl_solution_resultants(const bl_solution *s, bl_vec3 *F, double *N, bl_vec3
     }
 }
 
-void bl_solution_reactions(const bl_solution *s, const bl_vec3 *F, const bl_vec3 *C, bl_vec3 *R, double *M)
+void bl_solution_reactions(const bl_solution *s, bl_vec3 *R, bl_vec3 *M)
 {
     const bl_model *m = s->model;
-    for (int i = 0; i < m->nblocks; i++) {
-        R[i] = bl_v3(0, 0, 0);
-        if (M) M[i] = 0.0;
-    }
+    for (int i = 0; i < m->nblocks; i++) R[i] = M[i] = bl_v3(0, 0, 0);
+    const double *f = s->force;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
-        /* F acts on b; the free block a pushes a support b with F, a free
-         * block b a support a with -F */
+        /* the free block a pushes a support b with f, a free block b a
+         * support a with -f */
         int sup = m->blocks[in->b].support ? in->b : m->blocks[in->a].support ? in->a : -1;
-        if (sup < 0) continue;
-        bl_vec3 f = sup == in->b ? F[k] : bl_v3_scale(F[k], -1.0);
-        R[sup] = bl_v3_add(R[sup], f);
-        /* 2D: the shear acts along the joint's line, the normal part at C;
-         * both through C, which lies on that line */
-        if (M && m->dim == 2) M[sup] += C[k].x * f.y - C[k].y * f.x;
+        double sign = sup == in->b ? 1.0 : -1.0;
+        for (int e = 0; e < npoints(m, in); e++) {
+            bl_vec3 p, nrm, fe;
+            f = point_force(m, in, e, f, &p, &nrm, &fe);
+            if (sup < 0) continue;
+            fe = bl_v3_scale(fe, sign);
+            R[sup] = bl_v3_add(R[sup], fe);
+            M[sup] = bl_v3_add(M[sup], bl_v3_cross(p, fe));
+        }
     }
 }

@@ -177,10 +177,10 @@ void bl_solution_classify(bl_solution *s);
  * the joint's middle where N <= 0).  From s->force. */
 void bl_solution_resultants(const bl_solution *s, bl_vec3 *F, double *N, bl_vec3 *C);
 
-/* The forces the free blocks exert on each support i: R[i] (global axes),
- * and in 2D M[i], their moment about the origin (M may be NULL); zero for
- * free blocks.  F and C as from bl_solution_resultants. */
-void bl_solution_reactions(const bl_solution *s, const bl_vec3 *F, const bl_vec3 *C, bl_vec3 *R, double *M);
+/* What the free blocks exert on each support i: the force R[i] and its
+ * moment M[i] about the origin (global axes; in 2D only M[i].z is not
+ * zero), summed over the joints' points; zero for free blocks. */
+void bl_solution_reactions(const bl_solution *s, bl_vec3 *R, bl_vec3 *M);
 
 /* 3D: whether vertex e of interface k's contact polygon stays closed (its
  * relative velocity counts as zero), after bl_solution_classify. */

@@ -128,4 +128,29 @@ do
        ("%g %g %g against %g %g %g"):format(fx, fy, M, r.alpha * W, -W, Mw))
 end
 
+local function near3(a, b, tol)
+  return math.abs(a[1] - b[1]) <= tol and math.abs(a[2] - b[2]) <= tol and math.abs(a[3] - b[3]) <= tol
+end
+-- 3D: a box 0.5 x 0.4 x 1.5 (W = 0.3, density 1) on a slab rocks about its
+-- toe x = 0.5 + x0 at alpha = b/h = 1/3.  The slab receives (alpha W, 0, -W)
+-- and the moment of the loads about the origin: the weight (0, 0, -W) and
+-- alpha W along x, both at the centroid c, give c x (alpha W, 0, -W).  The
+-- box stands off the origin (x0, y0) so that every component counts.
+do
+  model { dim = 3, mu = 0.6 }
+  local x0, y0, b, d, h = 1.25, -2.5, 0.5, 0.4, 1.5
+  local pier = box { size = { b, d, h }, at = { x0, y0, 0 } }
+  local slab = box { size = { 3, 3, 0.3 }, at = { x0, y0, -0.3 }, support = true }
+  local r = solve { flow = "associative" }
+  local W, c = b * d * h, current():block_info(pier).centroid
+  local F = { r.alpha * W, 0, -W }
+  local M = { c[2] * F[3] - c[3] * F[2], c[3] * F[1] - c[1] * F[3], c[1] * F[2] - c[2] * F[1] }
+  local R = r.reactions[slab]
+  T.near(r.alpha, b / h, 1e-9, "3D box rocking: alpha = b/h")
+  T.ok(near3(R.force, F, 1e-9) and near3(R.moment, M, 1e-9),
+       "3D box rocking: the slab's reaction (alpha W, 0, -W) and its moment c x F about the origin (tolerance 1e-9)",
+       ("force %g %g %g moment %g %g %g against %g %g %g"):format(R.force[1], R.force[2], R.force[3],
+         R.moment[1], R.moment[2], R.moment[3], M[1], M[2], M[3]))
+end
+
 T.done()
