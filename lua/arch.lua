@@ -8,11 +8,13 @@
 -- In a 3D model it is a barrel vault: the same arch in the x-z plane (centre
 -- {x, z}) swept along y over `length`, in `segments` rings of voussoirs
 -- (default 1), on two springings running its whole length.
+-- fill = { level = H, density = g }: the weight of a fill up to the height
+-- H, carried by the extrados as dead point loads (doc/guide.md, arch{}).
 local report = require "blocklim.report"
 
 return function(M)
   local allowed = { n = true, radius = true, span = true, thickness = true, angle = true,
-                    centre = true, density = true, length = true, segments = true }
+                    centre = true, density = true, length = true, segments = true, fill = true }
   local function fail(msg) error("arch: " .. msg, 3) end
   local function positive(t, k)
     local v = t[k]
@@ -22,11 +24,26 @@ return function(M)
     return v
   end
 
+  -- The fill above the extrados chord from p to q (p left of q) up to the
+  -- height h: its area (a trapezoid, clipped where the chord rises above
+  -- h) and the point of the chord below its centroid.
+  local function fill_over(p, q, h)
+    local x1, y1, x2, y2 = p[1], p[2], q[1], q[2]
+    if y1 >= h and y2 >= h then return 0 end
+    local function cut() return x1 + (h - y1) / (y2 - y1) * (x2 - x1) end
+    if y1 > h then x1, y1 = cut(), h elseif y2 > h then x2, y2 = cut(), h end
+    local d1, d2 = h - y1, h - y2
+    local area = (x2 - x1) * (d1 + d2) / 2
+    if not (area > 0) then return 0 end
+    local x = x1 + (x2 - x1) * (d1 + 2 * d2) / (3 * (d1 + d2))
+    return area, x, y1 + (y2 - y1) * (x - x1) / (x2 - x1)
+  end
+
   return function(t)
     if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
     for k in pairs(t) do
       if not allowed[k] then
-        fail(("unknown field '%s' (fields: angle, centre, density, length, n, radius, segments, span, thickness)")
+        fail(("unknown field '%s' (fields: angle, centre, density, fill, length, n, radius, segments, span, thickness)")
           :format(tostring(k)))
       end
     end
@@ -67,6 +84,28 @@ return function(M)
         or not (math.abs(c[1]) < math.huge and math.abs(c[2]) < math.huge) then
       fail("field 'centre' must be a point {x, y} of two finite numbers")
     end
+    local fill = t.fill
+    if fill ~= nil then
+      if type(fill) ~= "table" then fail("field 'fill' must be a table { level = h, density = d }") end
+      for k in pairs(fill) do
+        if k ~= "level" and k ~= "density" then
+          fail(("field 'fill': unknown field '%s' (fields: density, level)"):format(tostring(k)))
+        end
+      end
+      local h = fill.level
+      if type(h) ~= "number" or not (math.abs(h) < math.huge) then
+        fail("field 'fill': field 'level' must be a finite number (the height of the fill's top), got "
+             .. tostring(h))
+      end
+      local d = fill.density
+      if type(d) ~= "number" or not (d > 0 and d < math.huge) then
+        fail("field 'fill': field 'density' must be a positive number (the fill's weight per volume), got "
+             .. tostring(d))
+      end
+      if angle > 180 then
+        fail("field 'fill' needs an arch of at most 180 degrees (a horseshoe's extrados overhangs)")
+      end
+    end
     local m = M.current()
     local solid = m and m:dim() == 3
     local length, segments = t.length, t.segments or 1
@@ -98,13 +137,26 @@ return function(M)
     local ri, ro = R - th / 2, R + th / 2
     local function at(r, a) return { c[1] + r * math.cos(a), c[2] + r * math.sin(a) } end
     local a0 = math.pi / 2 + half -- left springing
-    local blocks = {}
+    local blocks, loads = {}, {}
     for i = 0, n - 1 do
       local a, b = a0 - 2 * half * i / n, a0 - 2 * half * (i + 1) / n
-      for _, id in ipairs(make({ at(ri, a), at(ro, a), at(ro, b), at(ri, b) }, { density = t.density },
-                               segments)) do
+      local pieces = make({ at(ri, a), at(ro, a), at(ro, b), at(ri, b) }, { density = t.density }, segments)
+      local area, x, y = 0, nil, nil
+      if fill then area, x, y = fill_over(at(ro, a), at(ro, b), fill.level) end
+      for k, id in ipairs(pieces) do
         blocks[#blocks + 1] = id
+        if area > 0 then
+          -- its share of the fill: 2D across the model's thickness, 3D
+          -- along its piece of the vault
+          local w = solid and length / segments or m:block_info(id).thickness
+          loads[#loads + 1] = { block = id, force = -fill.density * area * w,
+                                at = solid and { x, length * (k - 0.5) / segments, y } or { x, y } }
+        end
       end
+    end
+    for _, l in ipairs(loads) do
+      local f = solid and { 0, 0, l.force } or { 0, l.force }
+      M.load { dead = { block = l.block, at = l.at, force = f } }
     end
     -- Springings continue each end joint along the arch's tangent, away from it.
     local springs = {}

@@ -23,6 +23,28 @@ return function(core)
   function methods.stats(m)
     return setmetatable(stats(m), Stats)
   end
+  -- load{ dead = { over = ..., q = ... } } (and live): a distributed load,
+  -- given to the core as the point loads it amounts to, once every part of
+  -- the command has been checked.
+  local distributed = require "blocklim.distributed"
+  local point_load = methods.load
+  function methods.load(m, t)
+    if type(t) ~= "table" then return point_load(m, t) end
+    local points, rest, spread = {}, {}, false
+    for k, v in pairs(t) do
+      if (k == "dead" or k == "live") and type(v) == "table" and v.over ~= nil then
+        spread = true
+        for _, p in ipairs(distributed.point_loads(m, core.blocks(m), v, "load " .. k)) do
+          points[#points + 1] = { [k] = p }
+        end
+      else
+        rest[k] = v
+      end
+    end
+    if not spread then return point_load(m, t) end
+    if next(rest) then point_load(m, rest) end
+    for _, p in ipairs(points) do point_load(m, p) end
+  end
   report.draw = core.draw
   report.vtk = core.vtk
 

@@ -859,7 +859,8 @@ static int model_dim(lua_State *L)
     return 1;
 }
 
-/* model:block_info(i) -> { vertices, centroid, area, weight, support } */
+/* model:block_info(i) -> { vertices, faces (3D), centroid, area and
+ * thickness (2D) or volume (3D), weight, support } */
 static int model_block_info(lua_State *L)
 {
     bl_model *m = check_model(L, 1);
@@ -890,7 +891,7 @@ static int model_block_info(lua_State *L)
         set_boolean(L, "support", b->support);
         return 1;
     }
-    lua_createtable(L, 0, 5);
+    lua_createtable(L, 0, 6);
     lua_createtable(L, b->nv, 0);
     for (int i = 0; i < b->nv; i++) {
         push_point(L, b->v[i]);
@@ -900,6 +901,7 @@ static int model_block_info(lua_State *L)
     push_point(L, b->centroid);
     lua_setfield(L, -2, "centroid");
     set_number(L, "area", b->area);
+    set_number(L, "thickness", b->thickness);
     set_number(L, "weight", b->weight);
     set_boolean(L, "support", b->support);
     return 1;

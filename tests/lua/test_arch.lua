@@ -97,4 +97,45 @@ do
        "1,500 voussoirs, mu = inf, by default: verified, the simplex's alpha (tolerance 1e-8)",
        ("%s %s %s"):format(r.status, tostring(r.alpha), tostring(rs.alpha)))
 end
+-- Fill (arch{ fill = { level = H, density = g } }).  Over the n extrados
+-- chords of a semicircle (extrados radius ro) up to H >= ro, the fill has
+-- the area 2 ro H - (n/2) ro^2 sin(pi/n) (the rectangle less the half
+-- polygon); its weight, g times that times the width (2D: the model's
+-- thickness; 3D: the vault's length), is what the supports carry beyond
+-- the voussoirs' own: the sum of the vertical reactions less their weight.
+for _, dim in ipairs { 2, 3 } do
+  local m = dim == 3 and model { dim = 3, mu = 0.6 } or model { mu = 0.6, thickness = 0.7 }
+  local n, ro, H, g, w = 9, 1.075, 1.4, 2.5, dim == 3 and 0.8 or 0.7
+  local v = arch { n = n, radius = 1, thickness = 0.15, fill = { level = H, density = g },
+                   length = dim == 3 and w or nil, segments = dim == 3 and 2 or nil }
+  local r = solve { flow = "associative" }
+  local W, R = 0, 0
+  for _, i in ipairs(v) do W = W + m:block_info(i).weight end
+  for _, react in pairs(r.reactions) do R = R - react.force[dim] end
+  T.near(R - W, g * w * (2 * ro * H - n / 2 * ro ^ 2 * math.sin(math.pi / n)), 1e-12 * R,
+         ("%dD arch: the fill's weight, g w (2 ro H - (n/2) ro^2 sin(pi/n))"):format(dim))
+end
+-- The fill's loads, worked out per voussoir as trapezoids, against the
+-- same fill as a distributed load q = g t max(0, H - y) on the top the
+-- model shows (doc/theory.md, "Distributed loads"), under a patch of live
+-- load at the left quarter: equal where H is above the crown (q linear on
+-- every chord: the quadrature is exact; tolerance 1e-9), within 1e-5
+-- where the extrados rises above H (the kink of max(0, H - y) inside a
+-- chord is integrated by 3 Gauss points on 16 pieces).
+for _, case in ipairs { { 1.4, 1e-9 }, { 0.95, 1e-5 } } do
+  local H, tol = case[1], case[2]
+  local function patch()
+    load { live = "none" }
+    load { live = { over = { -0.6, -0.3 }, q = 1 } }
+    return solve { flow = "associative" }.alpha
+  end
+  model { mu = 0.6, thickness = 0.7 }
+  arch { n = 15, radius = 1, thickness = 0.15, fill = { level = H, density = 2.5 } }
+  local a = patch()
+  model { mu = 0.6, thickness = 0.7 }
+  arch { n = 15, radius = 1, thickness = 0.15 }
+  load { dead = { over = { -2, 2 }, q = function(_, y) return 2.5 * 0.7 * math.max(0, H - y) end } }
+  T.near(patch() / a, 1, tol, ("fill to H = %g as arch{ fill } and as a distributed load: the same alpha"):format(H))
+end
+
 T.done()

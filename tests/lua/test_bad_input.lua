@@ -71,6 +71,19 @@ local bad = {
   { "load", function() load() end, "load", "expects a table" },
   { "solve", function() load { live = "none" }; solve {} end, "solve", "no live load" },
   { "load", function() load { direction = { 0, 0 }, live = "horizontal" } end, "load", "'direction'" },
+  -- distributed loads: checked whole before any part is applied
+  { "load", function() load { dead = { over = { 1, 0 }, q = 1 } } end, "load dead", "'over'", "x0 < x1" },
+  { "load", function() load { dead = { over = { -1, 2 }, q = -1 } } end, "load dead", "'q'", ">= 0" },
+  { "load", function() load { live = "none", dead = { over = { -1, 2 }, q = function(x)
+      if x > 0.5 then error("no fill here") end
+      return 1
+    end } } end, "load dead", "'q'", "no fill here" },
+  { "load", function() load { dead = { over = { -1, 2 }, q = function() return 0 / 0 end } } end,
+    "load dead", "'q' must give a finite number" },
+  { "load", function() load { live = { over = { 10, 11 }, q = 1 } } end, "load live", "no block lies below it" },
+  { "load", function() load { live = { over = { 0, 1 }, q = 1, force = { 1, 0 } } } end,
+    "load live", "unknown field 'force'" },
+  { "load", function() load { live = { over = { 0, 1 }, q = 1 }, tilt = "steep" } end, "load", "'tilt'" },
   { "contacts", function() contacts { tol = -1 } end, "contacts", "'tol'" },
   { "solve", function() solve { flow = "magic" } end, "solve", "'flow'", "associative" },
   { "solve", function() solve { tolerance = 0 } end, "solve", "'tolerance'" },
@@ -175,6 +188,10 @@ T.eq(message(function() wall { courses = { { 1, 1 } }, depth = 0.2, density = "h
 model {}
 T.eq(message(function() arch { span = 2, thickness = 0.2, n = 5, density = -1 } end),
      "arch: field 'density' must be > 0, got -1", "arch{ density = -1 }: arch names its field")
+T.eq(message(function() arch { span = 2, thickness = 0.2, n = 5, fill = { level = "high", density = 1 } } end),
+     "arch: field 'fill': field 'level' must be a finite number (the height of the fill's top), got high",
+     "arch{ fill = { level = 'high' } }: arch names fill's field")
+T.eq(stats().blocks, 0, "the refused arch with fill left no blocks")
 -- A declared 3D joint that gives a corner twice (it was accepted): refused,
 -- naming both points, and the detected joint stays (alpha = mu: sliding).
 model { dim = 3, mu = 0.6 }
@@ -225,5 +242,9 @@ do
            "extrude{} with a flat polygon says so", "extrude: field 'polygon' encloses no area")
   T.raises(function() extrude { polygon = { { 0, 0 }, { 1, 0 }, { 1, 1 } }, to = math.huge } end,
            "extrude{ to = inf } names 'to'", "extrude: fields 'from' and 'to' must be finite")
+  -- a distributed load is for 2D models
+  box { size = { 1, 1, 1 } }
+  T.raises(function() load { dead = { over = { 0, 1 }, q = 1 } } end, "a distributed load in 3D refused",
+           "load dead: field 'over' (a distributed load) is for 2D models")
 end
 T.done()

@@ -153,4 +153,41 @@ do
          R.moment[1], R.moment[2], R.moment[3], M[1], M[2], M[3]))
 end
 
+-- Distributed loads (load{ dead = { over, q } }).  A pier b x h = 0.5 x 1.5
+-- (W = 0.75) from x0 = 2, with q = k |x - x0| (k = 3) over [1.5, 3]: its
+-- top [x0, x0 + b] carries Q = k b^2 / 2 at x0 + 2b/3, the rest lands on
+-- the ground.  It rocks about its right toe when
+-- alpha W h/2 = W b/2 + Q b/3, alpha = (W b/2 + k b^3/6) / (W h/2).
+do
+  local x0, b, h, k = 2, 0.5, 1.5, 3
+  model { mu = 5 }
+  block { vertices = { { x0, 0 }, { x0 + b, 0 }, { x0 + b, h }, { x0, h } } }
+  block { vertices = { { 0, -1 }, { 5, -1 }, { 5, 0 }, { 0, 0 } }, support = true }
+  load { dead = { over = { 1.5, 3 }, q = function(x) return k * math.abs(x - x0) end } }
+  local W = b * h
+  T.near(solve { flow = "associative" }.alpha, (W * b / 2 + k * b ^ 3 / 6) / (W * h / 2), 1e-9,
+         "distributed q = k |x - x0| on a pier: alpha = (W b/2 + k b^3/6) / (W h/2)")
+end
+-- The load goes to what the model shows from above: a block A on a wider
+-- block B, q = 1 over [0.2, 1.8], is the point loads 0.7 on A's top at
+-- x = 0.85 and 0.9 on B's exposed top at x = (0.3 x 0.35 + 0.6 x 1.5) / 0.9
+-- (worked by hand); both models give the same alpha.
+do
+  local function stack()
+    model { mu = 0.5 }
+    local B = block { vertices = { { 0, 0 }, { 2, 0 }, { 2, 1 }, { 0, 1 } } }
+    local A = block { vertices = { { 0.5, 1 }, { 1.2, 1 }, { 1.2, 1.6 }, { 0.5, 1.6 } } }
+    block { vertices = { { -1, -1 }, { 3, -1 }, { 3, 0 }, { -1, 0 } }, support = true }
+    return A, B
+  end
+  stack()
+  load { dead = { over = { 0.2, 1.8 }, q = 1 } }
+  local spread = solve { flow = "associative" }.alpha
+  local A, B = stack()
+  load { dead = { block = A, at = { 0.85, 1.6 }, force = { 0, -0.7 } } }
+  load { dead = { block = B, at = { (0.3 * 0.35 + 0.6 * 1.5) / 0.9, 1 }, force = { 0, -0.9 } } }
+  T.near(spread, solve { flow = "associative" }.alpha, 1e-12,
+         "a distributed load over two stacked blocks = the point loads worked by hand")
+end
+
 T.done()
