@@ -95,12 +95,12 @@ return function(M)
       local h = fill.level
       if type(h) ~= "number" or not (math.abs(h) < math.huge) then
         fail("field 'fill': field 'level' must be a finite number (the height of the fill's top), got "
-             .. tostring(h))
+             .. report.show(h))
       end
       local d = fill.density
       if type(d) ~= "number" or not (d > 0 and d < math.huge) then
         fail("field 'fill': field 'density' must be a positive number (the fill's weight per volume), got "
-             .. tostring(d))
+             .. report.show(d))
       end
       if angle > 180 then
         fail("field 'fill' needs an arch of at most 180 degrees (a horseshoe's extrados overhangs)")
@@ -149,14 +149,19 @@ return function(M)
           -- its share of the fill: 2D across the model's thickness, 3D
           -- along its piece of the vault
           local w = solid and length / segments or m:block_info(id).thickness
-          loads[#loads + 1] = { block = id, force = -fill.density * area * w,
+          local f = -fill.density * area * w
+          if not (math.abs(f) < math.huge and math.abs(x) < math.huge) then
+            fail(("field 'fill': the fill over voussoir %d weighs %s, beyond the range of numbers"):format(i + 1, f))
+          end
+          loads[#loads + 1] = { block = id, force = f,
                                 at = solid and { x, length * (k - 0.5) / segments, y } or { x, y } }
         end
       end
     end
     for _, l in ipairs(loads) do
       local f = solid and { 0, 0, l.force } or { 0, l.force }
-      M.load { dead = { block = l.block, at = l.at, force = f } }
+      local ok, e = pcall(M.load, { dead = { block = l.block, at = l.at, force = f } })
+      if not ok then fail("field 'fill': " .. tostring(e)) end
     end
     -- Springings continue each end joint along the arch's tangent, away from it.
     local springs = {}

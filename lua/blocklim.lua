@@ -32,9 +32,9 @@ return function(core)
     if type(t) ~= "table" then return point_load(m, t) end
     local points, rest, spread = {}, {}, false
     for k, v in pairs(t) do
-      if (k == "dead" or k == "live") and type(v) == "table" and v.over ~= nil then
+      if (k == "dead" or k == "live") and type(v) == "table" and (v.over ~= nil or v.q ~= nil) then
         spread = true
-        for _, p in ipairs(distributed.point_loads(m, core.blocks(m), v, "load " .. k)) do
+        for _, p in ipairs(distributed.point_loads(m, core.blocks(m), v, "load " .. k, core.load_ratio)) do
           points[#points + 1] = { [k] = p }
         end
       else

@@ -9,6 +9,7 @@
 -- x̄ = ∫ x q dx / ∫ q dx, acting on its top at x̄.  Parts that land on
 -- supports are carried by them.
 local M = {}
+local show = require("blocklim.report").show
 
 -- Gauss-Legendre, 3 points on [-1, 1]: exact for q of degree up to 5 in x
 local GX = { -math.sqrt(0.6), 0, math.sqrt(0.6) }
@@ -34,9 +35,10 @@ local function top(b, x)
 end
 
 -- The point loads {block, at, force} of a distributed load t on model m
--- (blocks 1..n), checked whole before the caller applies any; errors
--- start with fn ("load dead").
-function M.point_loads(m, n, t, fn)
+-- (blocks 1..n), each at most `ratio` times its block's weight, checked
+-- whole before the caller applies any (so that applying them cannot
+-- fail); errors start with fn ("load dead").
+function M.point_loads(m, n, t, fn, ratio)
   local function fail(msg) error(fn .. ": " .. msg, 0) end
   for k in pairs(t) do
     if k ~= "over" and k ~= "q" then
@@ -47,12 +49,14 @@ function M.point_loads(m, n, t, fn)
     fail("field 'over' (a distributed load) is for 2D models; in 3D give point loads")
   end
   local o = t.over
-  if type(o) ~= "table" or not finite(o[1]) or not finite(o[2]) or not (o[1] < o[2]) then
+  if type(o) ~= "table" or #o ~= 2 or not finite(o[1]) or not finite(o[2]) or not (o[1] < o[2]) then
     fail("field 'over' must be {x0, x1}, two finite numbers with x0 < x1")
   end
   local q = t.q
   if type(q) == "number" then
-    if not finite(q) or q < 0 then fail("field 'q' must be a finite number >= 0 (load per unit length, pressing down), got " .. tostring(q)) end
+    if not finite(q) or q < 0 then
+      fail("field 'q' must be a finite number >= 0 (load per unit length, pressing down), got " .. show(q))
+    end
     local w = q
     q = function() return w end
   elseif type(q) ~= "function" then
@@ -97,7 +101,7 @@ function M.point_loads(m, n, t, fn)
         if not ok then fail("field 'q': " .. tostring(v)) end
         if not finite(v) or v < 0 then
           fail(("field 'q' must give a finite number >= 0, got %s at (%.6g, %.6g)")
-               :format(tostring(v), x, y0 + s * (x - a)))
+               :format(show(v), x, y0 + s * (x - a)))
         end
         F, Fx = F + GW[g] * h * v, Fx + GW[g] * h * v * x
       end
@@ -136,9 +140,17 @@ function M.point_loads(m, n, t, fn)
   for _, id in ipairs(order) do
     local b, F, Fx = table.unpack(share[id])
     if F > 0 then
+      if not (F <= ratio * b.weight and finite(Fx)) then
+        fail(("field 'q' gives block %d a load of %.6g, more than %g times its weight (%.6g): "
+              .. "the solve would not hold it"):format(id, F, ratio, b.weight))
+      end
       local x = Fx / F
       loads[#loads + 1] = { block = id, at = { x, (top(b, x)) }, force = { 0, -F } }
     end
+  end
+  if #loads == 0 then
+    fail(("field 'over' {%.6g, %.6g}: the load lands on supports only (or q is 0 on every free block), "
+          .. "and loads on supports do nothing"):format(x0, x1))
   end
   return loads
 end

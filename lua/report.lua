@@ -5,6 +5,8 @@ local Result = {}
 
 -- "s" for a count other than one: "1 block", "2 blocks".
 function report.plural(n) return n == 1 and "" or "s" end
+-- A value as a message shows it: strings quoted, so that "1" is not 1.
+function report.show(v) return type(v) == "string" and ("%q"):format(v) or tostring(v) end
 local plural = report.plural
 report.Result = Result
 

@@ -88,7 +88,13 @@ static void *create(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *e
                               hi.data(), obj.data(), p->rhs, p->rhs);
         lp->model.setLogLevel(s->verbose ? 1 : 0);
         if (!s->verbose) lp->model.messageHandler()->setLogLevel(0);
-        if (s->max_iterations > 0) lp->model.setMaximumIterations(s->max_iterations);
+        // Without a cap of its own, 50 pivots per row and column: CLP can
+        // cycle (W4 at mu = 1e4, a restart's random stress state: two
+        // bases in turn for minutes), and an LP that needs more is not
+        // one the simplex should be solving (legitimate ones take a few
+        // per row: 415,815 for 32 LPs of 3,120 rows, doc/seqlp.md 12).
+        lp->model.setMaximumIterations(s->max_iterations > 0 ? s->max_iterations
+                                                             : 50 * (p->nrows + p->ncols) + 10000);
         // CLP's default 1e-7 let a wrong fifth digit through on a 1,040-block
         // wall (doc/theory.md, verification).
         double tol = s->tolerance > 0 ? s->tolerance : 1e-9;

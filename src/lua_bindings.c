@@ -120,8 +120,11 @@ static double number_field(lua_State *L, int idx, const char *fn, const char *f,
     if (sign == NONNEG && v < 0) fail(L, "%s: field '%s' must be >= 0, got %g", fn, f, v);
     if (sign == POSITIVE && !(v > 0))
         fail(L, "%s: field '%s' must be > 0, got %g", fn, f, v);
-    if (sign != ANY && isinf(v) && strcmp(f, "mu") != 0)
-        fail(L, "%s: field '%s' must be finite", fn, f);
+    int mu = strcmp(f, "mu") == 0;
+    if (sign != ANY && isinf(v) && !mu) fail(L, "%s: field '%s' must be finite", fn, f);
+    if (mu && isfinite(v) && v > BL_MU_MAX)
+        fail(L, "%s: field 'mu' must be at most %g, or math.huge for joints that never slide, got %g", fn,
+             BL_MU_MAX, v);
     return v;
 }
 
@@ -630,6 +633,8 @@ static int model_interface(lua_State *L)
 static void apply_loads(lua_State *L, bl_model *m, const int kinds[2], const bl_point_load pl[2])
 {
     bl_error err;
+    for (int k = 0; k < 2; k++) /* both checked before either is added */
+        if (kinds[k] == 2 && bl_model_check_point_load(m, &pl[k], &err)) fail(L, "%s", err.msg);
     for (int k = 0; k < 2; k++)
         if (kinds[k] == 2 && bl_model_add_point_load(m, &pl[k], &err)) fail(L, "%s", err.msg);
     if (kinds[0] == 0) m->self_weight = 1;
@@ -1473,6 +1478,8 @@ int luaopen_blocklim(lua_State *L)
     luaL_newlib(L, core);
     lua_pushvalue(L, methods);
     lua_setfield(L, -2, "model_methods");
+    lua_pushnumber(L, BL_LOAD_RATIO);
+    lua_setfield(L, -2, "load_ratio");
     lua_call(L, 1, 1);
     return 1;
 }

@@ -260,8 +260,31 @@ int bl_model_add_joint(bl_model *m, const bl_joint_spec *s, bl_error *err)
     return 0;
 }
 
+int bl_model_check_point_load(const bl_model *m, const bl_point_load *l, bl_error *err)
+{
+    const bl_block *b = &m->blocks[l->block];
+    const char *kind = l->live ? "live" : "dead";
+    double f = m->dim == 3 ? bl_v3_norm(l->force3) : bl_v2_norm(l->force);
+    if (!(f <= BL_LOAD_RATIO * b->weight))
+        return bl_error_set(err, "load %s: field 'force' on block %d is %g, more than %g times the block's "
+                            "weight (%g): the solve would not hold it", kind, l->block + 1, f, BL_LOAD_RATIO,
+                            b->weight);
+    if (m->dim == 3) {
+        const double *x = b->box3;
+        double size = sqrt((x[3] - x[0]) * (x[3] - x[0]) + (x[4] - x[1]) * (x[4] - x[1]) +
+                           (x[5] - x[2]) * (x[5] - x[2]));
+        double c = bl_v3_norm(l->moment3);
+        if (!(c <= BL_LOAD_RATIO * b->weight * size))
+            return bl_error_set(err, "load %s: field 'moment' on block %d is %g, more than %g times the "
+                                "block's weight times its size (%g): the solve would not hold it", kind,
+                                l->block + 1, c, BL_LOAD_RATIO, b->weight * size);
+    }
+    return 0;
+}
+
 int bl_model_add_point_load(bl_model *m, const bl_point_load *l, bl_error *err)
 {
+    if (bl_model_check_point_load(m, l, err)) return -1;
     if (RESERVE(m->loads, m->cap_loads, m->nloads + 1))
         return bl_error_set(err, "load: out of memory");
     m->loads[m->nloads++] = *l;

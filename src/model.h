@@ -142,6 +142,22 @@ int bl_model_add_interface(bl_model *m, const bl_interface *k, bl_error *err);
 /* Records a joint spec (see bl_joint_spec) and invalidates interfaces. */
 int bl_model_add_joint(bl_model *m, const bl_joint_spec *s, bl_error *err);
 
+/* The largest finite friction coefficient: above it the LPs lose their
+ * round-off (W4 at mu = 1e5: "numerical trouble" on the interior point; at
+ * 1e20 "infeasible"; at 1e7 a simplex that cycled), and no joint of
+ * masonry needs it: mu = inf (math.huge) is a joint that never slides. */
+#define BL_MU_MAX 1e3
+
+/* A point load above BL_LOAD_RATIO times its block's weight (a couple above
+ * that times the weight and the block's size) is refused: the LP, scaled
+ * by the blocks' weights, no longer holds it (a dead load of 1e35 W read
+ * "infeasible", one of 1e100 W stopped CLP on an assertion), and no
+ * masonry carries such a load. */
+#define BL_LOAD_RATIO 1e12
+
+/* Whether a point load can be added (BL_LOAD_RATIO).  0, or -1 with a
+ * message. */
+int bl_model_check_point_load(const bl_model *m, const bl_point_load *l, bl_error *err);
 int bl_model_add_point_load(bl_model *m, const bl_point_load *l, bl_error *err);
 
 /* Removes every interface (freeing their 3D polygons). */

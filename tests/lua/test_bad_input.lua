@@ -20,6 +20,10 @@ local bad = {
   { "model", function() model { density = -2 } end, "model", "'density'" },
   { "model", function() model { density = "heavy" } end, "model", "'density'", "number" },
   { "model", function() model { friction = 0.6 } end, "model", "unknown field 'friction'" },
+  -- a finite mu above 1000: W4 read "infeasible" at 1e20 and its restarts
+  -- cycled in the simplex at 1e7
+  { "model", function() model { mu = 1e20 } end, "model", "'mu' must be at most 1000, or math.huge" },
+  { "interface", function() interface { 1, 2, mu = 1e4 } end, "interface", "'mu' must be at most 1000" },
   { "model", function() model { dim = 4 } end, "model", "'dim'" },
   { "model", function() model { gravity = { 0 } } end, "model", "'gravity'" },
   { "block", function() block { vertices = { { 0, 0 }, { 1, 0 } } } end,
@@ -84,6 +88,23 @@ local bad = {
   { "load", function() load { live = { over = { 0, 1 }, q = 1, force = { 1, 0 } } } end,
     "load live", "unknown field 'force'" },
   { "load", function() load { live = { over = { 0, 1 }, q = 1 }, tilt = "steep" } end, "load", "'tilt'" },
+  { "load", function() load { live = "none", dead = { over = { -1, 2 }, q = function(x)
+      return x < 0.5 and 1 or 1e308
+    end } } end, "load dead", "'q' gives block 1 a load of", "more than 1e+12 times its weight" },
+  { "load", function() load { dead = { over = { -1, 2 }, q = function() return "1" end } } end,
+    "load dead", "'q' must give a finite number", 'got "1"' },
+  { "load", function() load { dead = { ovr = { 0, 1 }, q = 1 } } end, "load dead",
+    "unknown field 'ovr' of a distributed load (fields: over, q)" },
+  { "load", function() load { dead = { over = { 0, 1, 2 }, q = 1 } } end, "load dead", "'over' must be {x0, x1}" },
+  { "load", function() load { live = { over = { 5, 6 }, q = 1 } } end, "load live",
+    "lands on supports only" },
+  -- loads beyond 1e12 times their block's weight: the LP would not hold
+  -- them (1e35 read "infeasible", 1e100 stopped CLP on an assertion)
+  { "load", function() load { dead = { block = 1, at = { 0.5, 1 }, force = { 0, -1e13 } } } end,
+    "load dead", "'force' on block 1 is 1e+13, more than 1e+12 times the block's weight" },
+  { "load", function() load { dead = { block = 1, at = { 0.5, 1 }, force = { 0, -1 } },
+                              live = { block = 1, at = { 0.5, 1 }, force = { 1e200, 0 } } } end,
+    "load live", "'force' on block 1" },
   { "contacts", function() contacts { tol = -1 } end, "contacts", "'tol'" },
   { "solve", function() solve { flow = "magic" } end, "solve", "'flow'", "associative" },
   { "solve", function() solve { tolerance = 0 } end, "solve", "'tolerance'" },
@@ -189,8 +210,11 @@ model {}
 T.eq(message(function() arch { span = 2, thickness = 0.2, n = 5, density = -1 } end),
      "arch: field 'density' must be > 0, got -1", "arch{ density = -1 }: arch names its field")
 T.eq(message(function() arch { span = 2, thickness = 0.2, n = 5, fill = { level = "high", density = 1 } } end),
-     "arch: field 'fill': field 'level' must be a finite number (the height of the fill's top), got high",
+     'arch: field \'fill\': field \'level\' must be a finite number (the height of the fill\'s top), got "high"',
      "arch{ fill = { level = 'high' } }: arch names fill's field")
+T.eq(message(function() arch { span = 2, thickness = 0.2, n = 5, fill = { level = 1e308, density = 1 } } end),
+     "arch: field 'fill': the fill over voussoir 1 weighs -inf, beyond the range of numbers",
+     "arch{ fill = { level = 1e308 } }: the overflow named")
 T.eq(stats().blocks, 0, "the refused arch with fill left no blocks")
 -- A declared 3D joint that gives a corner twice (it was accepted): refused,
 -- naming both points, and the detected joint stays (alpha = mu: sliding).
@@ -246,5 +270,7 @@ do
   box { size = { 1, 1, 1 } }
   T.raises(function() load { dead = { over = { 0, 1 }, q = 1 } } end, "a distributed load in 3D refused",
            "load dead: field 'over' (a distributed load) is for 2D models")
+  T.raises(function() load { dead = { block = 1, moment = { 0, 1e13, 0 } } } end, "a 3D couple of 1e13 refused",
+           "load dead: field 'moment' on block 1 is 1e+13, more than 1e+12 times the block's weight times its size")
 end
 T.done()
