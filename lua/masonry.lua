@@ -1,12 +1,13 @@
 -- masonry.lua - 3D assemblages of masonry units (boxes of solid.lua) on a
 -- fixed base slab, for models with dim = 3.
 --
--- facade{ length = n, returns = m, courses = c, unit = {L, H}, density }:
---   a facade of n blocks L long along x, half a block (L/2) thick along y,
---   with return walls at both ends running m blocks along +y, interlocked in
---   alternate courses (the facade runs through the corners in the first,
---   the returns in the next), c courses H high, on a fixed base slab.
---   Returns the block numbers and the base.
+-- facade{ length = n, returns = m, courses = c, unit = {L, H}, openings,
+--   density }: a facade of n blocks L long along x, half a block (L/2)
+--   thick along y, with return walls at both ends running m blocks along
+--   +y, interlocked in alternate courses (the facade runs through the
+--   corners in the first, the returns in the next), c courses H high, on a
+--   fixed base slab; openings in the facade as in bond{}, between the
+--   returns.  Returns the block numbers and the base.
 -- corner{ lengths = {n1, n2}, courses = c, unit = {L, H}, density }: two
 --   panels half a block (L/2) thick meeting at a corner at the origin, one
 --   n1 blocks long along +x, the other n2 blocks along +y, interlocked in
@@ -39,11 +40,58 @@ return function(M, fields)
   local fail, number_list, check = fields.fail, fields.number_list, fields.check
   local positive_integer = fields.positive_integer
 
+  -- t.openings of command fn: a list of {x0, x1, c0, c1}, x in units of L
+  -- from lo to hi, courses from 1 to `courses`
+  local function openings_field(fn, t, lo, hi, courses)
+    local openings = t.openings or {}
+    if type(openings) ~= "table" then fail(fn, "field 'openings' must be a list of {x0, x1, c0, c1}") end
+    for i, o in ipairs(openings) do
+      if type(o) ~= "table" or #o ~= 4 then
+        fail(fn, ("field 'openings' entry %d must be {x0, x1, c0, c1}"):format(i))
+      end
+      for j = 1, 4 do
+        if type(o[j]) ~= "number" then
+          fail(fn, ("field 'openings' entry %d must be {x0, x1, c0, c1} of numbers"):format(i))
+        end
+      end
+      if not (o[1] < o[2] and o[3] <= o[4] and o[1] >= lo and o[2] <= hi) then
+        fail(fn, ("field 'openings' entry %d must have %g <= x0 < x1 <= %g and c0 <= c1"):format(i, lo, hi))
+      end
+      if not (o[3] >= 1 and o[4] <= courses and o[3] == math.floor(o[3]) and o[4] == math.floor(o[4])) then
+        fail(fn, ("field 'openings' entry %d must have courses c0, c1 from 1 to %d (courses), got %g to %g")
+          :format(i, courses, o[3], o[4]))
+      end
+    end
+    return openings
+  end
+
+  -- pieces {x0, x1, ...} of course c (1 = the lowest) less the openings
+  -- that reach it, cut at their jambs
+  local function cut(pieces, openings, c)
+    for _, o in ipairs(openings) do
+      if c >= o[3] and c <= o[4] then
+        local kept = {}
+        for _, p in ipairs(pieces) do
+          if p[2] <= o[1] or p[1] >= o[2] then kept[#kept + 1] = p
+          else
+            if p[1] < o[1] then kept[#kept + 1] = { p[1], o[1], table.unpack(p, 3) } end
+            if p[2] > o[2] then kept[#kept + 1] = { o[2], p[2], table.unpack(p, 3) } end
+          end
+        end
+        pieces = kept
+      end
+    end
+    return pieces
+  end
+
   function M.facade(t)
-    check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true })
+    check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true,
+                         openings = true })
     local n, m = positive_integer("facade", t, "length"), positive_integer("facade", t, "returns")
     local courses = positive_integer("facade", t, "courses")
     if n < 2 then fail("facade", "field 'length' must be at least 2 blocks") end
+    -- between the return walls' inner faces
+    local openings = openings_field("facade", t, 0.5, n - 0.5, courses)
     local u = number_list("facade", t, "unit", 2, true)
     local L, H, th = u[1], u[2], u[1] / 2
     local W, D = n * L, th + m * L
@@ -51,8 +99,16 @@ return function(M, fields)
     local function put(size, at) blocks[#blocks + 1] = M.box { size = size, at = at, density = rho } end
     for c = 0, courses - 1 do
       local z = c * H
+      -- the facade's blocks, from pieces {x0, x1} in units of L
+      local function front(x0, count)
+        local pieces = {}
+        for k = 0, count - 1 do pieces[#pieces + 1] = { x0 + k, x0 + k + 1 } end
+        for _, p in ipairs(cut(pieces, openings, c + 1)) do
+          put({ (p[2] - p[1]) * L, th, H }, { (p[1] + p[2]) / 2 * L, th / 2, z })
+        end
+      end
       if c % 2 == 0 then -- the facade runs through the corners
-        for k = 0, n - 1 do put({ L, th, H }, { (k + 0.5) * L, th / 2, z }) end
+        front(0, n)
         for _, x in ipairs { th / 2, W - th / 2 } do
           for k = 0, m - 1 do put({ th, L, H }, { x, th + (k + 0.5) * L, z }) end
         end
@@ -61,7 +117,7 @@ return function(M, fields)
           for k = 0, m - 1 do put({ th, L, H }, { x, (k + 0.5) * L, z }) end
           put({ th, th, H }, { x, m * L + th / 2, z })
         end
-        for k = 0, n - 2 do put({ L, th, H }, { th + (k + 0.5) * L, th / 2, z }) end
+        front(0.5, n - 1)
       end
     end
     local base = M.box { size = { W + 2 * th, D + 2 * th, H }, at = { W / 2, D / 2, -H }, support = true }
@@ -138,25 +194,7 @@ return function(M, fields)
       fail("bond", ("field 'pattern' must be \"english\", \"header\" or \"stretcher\", got %s")
         :format(tostring(pattern)))
     end
-    local openings = t.openings or {}
-    if type(openings) ~= "table" then fail("bond", "field 'openings' must be a list of {x0, x1, c0, c1}") end
-    for i, o in ipairs(openings) do
-      if type(o) ~= "table" or #o ~= 4 then
-        fail("bond", ("field 'openings' entry %d must be {x0, x1, c0, c1}"):format(i))
-      end
-      for j = 1, 4 do
-        if type(o[j]) ~= "number" then
-          fail("bond", ("field 'openings' entry %d must be {x0, x1, c0, c1} of numbers"):format(i))
-        end
-      end
-      if not (o[1] < o[2] and o[3] <= o[4] and o[1] >= 0 and o[2] <= n) then
-        fail("bond", ("field 'openings' entry %d must have 0 <= x0 < x1 <= length and c0 <= c1"):format(i))
-      end
-      if not (o[3] >= 1 and o[4] <= courses and o[3] == math.floor(o[3]) and o[4] == math.floor(o[4])) then
-        fail("bond", ("field 'openings' entry %d must have courses c0, c1 from 1 to %d (courses), got %g to %g")
-          :format(i, courses, o[3], o[4]))
-      end
-    end
+    local openings = openings_field("bond", t, 0, n, courses)
     -- a course as pieces {x0, x1, y0, y1} in units of L, then cut by the
     -- openings that reach it
     local function course(c)
@@ -191,20 +229,7 @@ return function(M, fields)
           run(0, w, k - 0.5, k)
         end
       end
-      for _, o in ipairs(openings) do
-        if c >= o[3] and c <= o[4] then
-          local cut = {}
-          for _, p in ipairs(pieces) do
-            if p[2] <= o[1] or p[1] >= o[2] then cut[#cut + 1] = p
-            else
-              if p[1] < o[1] then cut[#cut + 1] = { p[1], o[1], p[3], p[4] } end
-              if p[2] > o[2] then cut[#cut + 1] = { o[2], p[2], p[3], p[4] } end
-            end
-          end
-          pieces = cut
-        end
-      end
-      return pieces
+      return cut(pieces, openings, c)
     end
     local blocks = {}
     for c = 1, courses do

@@ -655,6 +655,31 @@ model { dim = 3, mu = 0.65 }
 local fb, fbase = facade { length = 8, returns = 3, courses = 8, unit = { 0.4, 0.2 } }
 T.eq(#fb, 4 * (8 + 2 * 3) + 4 * (2 * (3 + 1) + 8 - 1), "facade{}: 116 blocks in 8 interlocked courses")
 T.ok(current():block_info(fbase).support and contacts {} > 0, "facade{}: a fixed base, and every block touches")
+-- openings in the facade (6 blocks long, 6 courses, unit 0.4 x 0.2, L/2
+-- thick): a door {2, 4, 1, 2} takes out 2 x 2L of two courses, a weight of
+-- 2 (0.8 x 0.2 x 0.2), and 3 blocks (2 whole in course 1; in course 2 one
+-- whole and two cut at the jambs); a window and its mirror image about the
+-- middle (x -> 6 - x) give the same alpha out of the plane (tolerance 1e-9)
+do
+  local function build(openings)
+    model { dim = 3, mu = 0.65 }
+    local b = facade { length = 6, returns = 2, courses = 6, unit = { 0.4, 0.2 }, openings = openings }
+    local W = 0
+    for _, i in ipairs(b) do W = W + current():block_info(i).weight end
+    load { direction = { 0, 1 } }
+    return #b, W, solve { flow = "associative" }.alpha
+  end
+  local n0, W0 = build(nil)
+  local n1, W1 = build { { 2, 4, 1, 2 } }
+  T.ok(n0 - n1 == 3 and math.abs(W0 - W1 - 2 * 0.8 * 0.2 * 0.2) <= 1e-12,
+       "facade{ openings }: a door takes out its volume's weight and 3 blocks", ("%d %.15g"):format(n0 - n1, W0 - W1))
+  local _, _, left = build { { 1.5, 3, 2, 4 } }
+  local _, _, right = build { { 3, 4.5, 2, 4 } }
+  T.near(left, right, 1e-9 * left, "facade{ openings }: a window and its mirror image, the same alpha")
+  T.raises(function() facade { length = 6, returns = 2, courses = 6, unit = { 0.4, 0.2 }, openings = { { 0.2, 1, 1, 1 } } } end,
+           "facade{ openings } reaching into a return wall refused",
+           "facade: field 'openings' entry 1 must have 0.5 <= x0 < x1 <= 5.5")
+end
 
 T.raises(function() model { interface = "resultant" } end, "the interface model is refused in 2D",
          "model", "'interface'")
