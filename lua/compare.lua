@@ -41,21 +41,22 @@ return function(M)
     if entry.label then return entry.label end
     local parts = { entry.method or entry.flow or "default" }
     for _, k in ipairs { "flow", "start", "complementarity", "lp" } do
-      if entry[k] and k ~= "method" then parts[#parts + 1] = tostring(entry[k]) end
+      if entry[k] and not (k == "flow" and entry.method == nil) then parts[#parts + 1] = tostring(entry[k]) end
     end
     return table.concat(parts, " ")
   end
 
   -- Whether a row of this method (and flow) takes the common field k: a
   -- method that solves one flow rule takes no other flow, only Ipopt takes
-  -- its start and penalty, and the associative LP none of the sequence's
-  -- restarts and path (solve{} refuses each of them).
-  local seq_only = { starts = true, seed = true, nearest = true, path = true }
+  -- its start and penalty, and a row of the associative flow none of the
+  -- sequence's settings (solve{} refuses each of them).
+  local seq_only = { starts = true, seed = true, nearest = true, path = true, beta = true, settle = true,
+                     slip = true, lps = true }
   local mpec_only = { start = true, penalty = true, complementarity = true }
   local function takes(method, flow, k)
     if k == "flow" then return method ~= "assoc" and method ~= "seqlp" end
     if mpec_only[k] then return method == "mpec" end
-    if seq_only[k] then return method ~= "assoc" and not (method == nil and flow == "associative") end
+    if seq_only[k] then return method ~= "assoc" and flow ~= "associative" end
     return true
   end
 
@@ -68,6 +69,24 @@ return function(M)
     local methods = t.methods or { "assoc", "seqlp", "mpec" }
     if type(methods) ~= "table" or #methods == 0 then
       fail("field 'methods' must be a non-empty list of method names or solve{} tables")
+    end
+    local count = 0
+    for k in pairs(methods) do
+      count = count + 1
+      if math.type(k) ~= "integer" or k < 1 then
+        fail(("field 'methods' must be a list without gaps or other keys, got key %s"):format(tostring(k)))
+      end
+    end
+    for i = 1, count do
+      if methods[i] == nil then fail(("field 'methods' must be a list without gaps: entry %d is missing"):format(i)) end
+    end
+    for k in pairs(t) do
+      if type(k) ~= "string" then
+        fail(("give the methods as methods = { ... }, not as entries of compare{} (got key %s)"):format(tostring(k)))
+      end
+    end
+    if t.mps ~= nil then
+      fail("field 'mps' would write every row's LP to one file: give it to one solve{}")
     end
     local m = M.current()
     if not m then fail("no current model; start one with model{ mu = 0.65 }") end
@@ -96,6 +115,16 @@ return function(M)
       end
       if fields.method == "assoc" and fields.flow == nil then fields.flow = "associative" end
       local ok, r = pcall(m.solve, m, fields)
+      if not ok and tostring(r):find("interrupted", 1, true) then
+        -- Ctrl-C: say what the rows before it found, and where this one is
+        local done = {}
+        for j = 1, i - 1 do
+          done[#done + 1] = ("%s %s"):format(rows[j].label, rows[j].result.alpha == rows[j].result.alpha
+            and ("%.6g"):format(rows[j].result.alpha) or rows[j].result.status)
+        end
+        fail(("interrupted (Ctrl-C) in methods[%d] (%s)%s; last() holds what that row had found")
+             :format(i, label_of(entry), #done > 0 and "; finished: " .. table.concat(done, ", ") or ""))
+      end
       if not ok then
         -- a field given to compare{} itself that solve{} does not know is
         -- compare{}'s own mistake, not the row's
@@ -152,25 +181,43 @@ return function(M)
 
   function Comparison.__tostring(c)
     local out = {}
-    local head = ("%-22s %-6s %-10s %8s %8s %5s %8s %8s %8s %8s %-6s %7s %7s")
+    local head = ("%-22s %-6s %-10s %8s %8s %5s %8s %8s %8s %8s %-6s %7s %7s  %s")
       :format("method", "flow", "alpha", "time s", "iter.", "LPs", "equil.", "yield", "compl.",
-              "flow r.", "verif.", "mech.", "states")
+              "flow r.", "verif.", "mech.", "states", "notes")
     out[1] = head
     out[2] = ("-"):rep(#head)
+    local pyramids = {}
+    for _, row in ipairs(c.rows) do
+      local cone = row.result.cone
+      if cone then pyramids[("%d %s"):format(cone.facets, cone.kind)] = true end
+    end
+    local several = next(pyramids) and next(pyramids, next(pyramids))
     for _, row in ipairs(c.rows) do
       local r, e = row.result, row.result.residuals or {}
       local answered = r.status == "optimal" or r.status == "unstable"
-      out[#out + 1] = ("%-22s %-6s %-10s %8.3f %8d %5s %8s %8s %8s %8s %-6s %7s %7s"):format(
+      -- what the columns do not show: a status beside the answer, a start
+      -- kept over Ipopt's point, a search cut short, the pyramid where rows
+      -- differ in it
+      local notes = {}
+      if r.status == "unstable" then notes[#notes + 1] = "unstable" end
+      if r.ipopt and r.ipopt.status == "not run" then
+        notes[#notes + 1] = "Ipopt not run"
+      elseif r.ipopt and r.ipopt.kept_start then
+        notes[#notes + 1] = ("start kept (Ipopt %s at %.6g)"):format(r.ipopt.status, r.ipopt.alpha)
+      end
+      if r.time_up then notes[#notes + 1] = "time up" end
+      if r.interrupted then notes[#notes + 1] = "interrupted" end
+      if several and r.cone then notes[#notes + 1] = ("%d-facet %s pyramid"):format(r.cone.facets, r.cone.kind) end
+      out[#out + 1] = ("%-22s %-6s %-10s %8.3f %8d %5s %8s %8s %8s %8s %-6s %7s %7s  %s"):format(
         row.label:sub(1, 22), r.flow == "associative" and "assoc" or "non-a",
         answered and ("%.6f"):format(r.alpha) or r.status:sub(1, 10), r.timings.total,
         r.iterations, r.method == "mpec" and "-" or tostring(r.lps or 1), g(e.equilibrium), g(e.yield), g(e.complementarity),
         g(flow_rule(e)), tostring(r.verified), row.agreement and ("%.4f"):format(row.agreement) or "-",
-        row.differing and tostring(row.differing) or "-")
+        row.differing and tostring(row.differing) or "-", table.concat(notes, "; "))
     end
-    out[#out + 1] = ("flow r.: the largest of the work, flow and dilatancy residuals; "
-                     .. "mech.: U . U1 / (|U| |U1|) against the first row's mechanism, U the block velocities "
-                     .. "with rotations times the mean block size (doc/theory.md 6.2); "
-                     .. "states: interfaces whose state differs from the first row's")
+    out[#out + 1] = "flow r.: the largest of the work, flow and dilatancy residuals; mech.: U . U1 / (|U| |U1|)"
+    out[#out + 1] = "against the first row's mechanism, U the block velocities with rotations times the mean"
+    out[#out + 1] = "block size (doc/theory.md 6.2); states: interfaces whose state differs from the first row's"
     return table.concat(out, "\n")
   end
 

@@ -48,7 +48,10 @@ function Result.__tostring(r)
   end
   if r.alpha_assoc then
     local last = r.certified and not r.interrupted and not r.time_up and ", the last one its certificate" or ""
-    if r.live_scales_dead then
+    if r.none_dilates then
+      say("  no joint has finite, non-zero friction, so none dilates: the associative answer is the")
+      say("  non-associative one (no sequence ran)")
+    elseif r.live_scales_dead then
       say("  the live load is the self weight along gravity: at every alpha the problem is the dead")
       say("  load's, scaled, and the structure carries it; no collapse, with dilatancy or without")
     elseif r.alpha_assoc == math.huge and r.status == "unbounded" then
@@ -101,7 +104,8 @@ function Result.__tostring(r)
       if st.continues then went_on = st end
     end
     local paths = #r.starts - (went_on and 1 or 0)
-    if r.assoc_is_solution then
+    if r.none_dilates then -- said above
+    elseif r.assoc_is_solution then
       say("  (with unlimited friction alpha is the same: the associative answer is itself a")
       if paths > 1 then
         say("  non-associative solution; %d restarts looked for lower ones)", paths - 1)
@@ -147,13 +151,19 @@ function Result.__tostring(r)
       say("  a larger lps or starts = K, and take the lowest alpha that certifies")
     end
   end
-  if r.ipopt then
+  if r.ipopt and r.ipopt.status == "not run" then
     local i = r.ipopt
+    say("  %s flow, mpec method: Ipopt did not run; its start ended %s", r.flow, r.status)
+    say("  (the start: %s%s, on the %s LP)", i.start, i.start_why and ", as " .. i.start_why or "", r.lp)
+  elseif r.ipopt then
+    local i = r.ipopt
+    local why = {}
+    if i.start_why then why[#why + 1] = i.start_why end
+    if i.alpha_start == i.alpha_start then why[#why + 1] = ("alpha %.6g"):format(i.alpha_start) end
     say("  %s flow, mpec method: Ipopt %s after %d iterations, %d constraints x %d variables",
         r.flow, i.status, r.iterations, size.rows, size.columns)
     say("  complementarity by %s, started from %s%s; sum of products %s", i.complementarity,
-        i.start, i.alpha_start == i.alpha_start and (" (alpha %.6g)"):format(i.alpha_start) or "",
-        g(i.pairs))
+        i.start, #why > 0 and " (" .. table.concat(why, "; ") .. ")" or "", g(i.pairs))
     if i.kept_start and (i.status == "solved" or i.status == "solved to acceptable level") then
       say("  Ipopt's point (alpha %.6g) is not a lower verified answer: the start's certified", i.alpha)
       say("  answer stands")
@@ -202,6 +212,12 @@ local function picture(fmt)
     end
     if type(file) ~= "string" then
       error(("%s: expects a file name, got %s"):format(fmt, type(file)), 2)
+    end
+    -- a name that says another format would hold this one
+    local ext = file:match("%.(%w+)$")
+    if ext and ext:lower() ~= fmt and (ext:lower() == "png" or ext:lower() == "svg") then
+      error(("%s: the file name '%s' ends in .%s, but this writes %s: use r:%s(file)")
+            :format(fmt, file, ext, fmt:upper(), ext:lower()), 2)
     end
     local width, az, el
     if opts ~= nil then

@@ -983,6 +983,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         set_boolean(L, "interrupted", s->interrupted);
         set_boolean(L, "time_up", s->time_up);
         if (s->live_scales_dead) set_boolean(L, "live_scales_dead", 1);
+        if (s->none_dilates) set_boolean(L, "none_dilates", 1);
         set_integer(L, "lps", s->lps);
         set_number(L, "slip", s->slip);
         if (s->path_steps > 0) {
@@ -1034,6 +1035,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         set_string(L, "status", s->nlp_status);
         set_string(L, "complementarity", s->comp);
         set_string(L, "start", s->start_kind);
+        if (s->start_why) set_string(L, "start_why", s->start_why);
         set_number(L, "alpha_start", s->alpha_start);
         set_number(L, "pairs", s->pair_sum);
         set_number(L, "alpha", s->alpha_ipopt);
@@ -1233,9 +1235,14 @@ static int model_solve(lua_State *L)
     so.progress = boolean_field(L, 2, "solve", "progress", isatty(STDERR_FILENO));
     so.path = field_given(L, 2, "path") ? boolean_field(L, 2, "solve", "path", 0) : -1;
     so.when_sliding = !field_given(L, 2, "method") && !field_given(L, 2, "flow");
-    if ((field_given(L, 2, "starts") || field_given(L, 2, "seed") ||
-         field_given(L, 2, "nearest") || field_given(L, 2, "path")) && method == ASSOC)
-        fail(L, "solve: fields 'starts', 'seed', 'nearest' and 'path' go with flow = \"nonassociative\"");
+    if (!flow) {
+        /* the sequence's settings, which an associative answer never uses */
+        static const char *const seq[] = {"starts", "seed", "nearest", "path", "beta", "settle",
+                                          "slip", "lps", NULL};
+        for (int k = 0; seq[k]; k++)
+            if (field_given(L, 2, seq[k]))
+                fail(L, "solve: field '%s' goes with flow = \"nonassociative\" (the sequence of LPs)", seq[k]);
+    }
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;
     bl_solve_options_default(&o);

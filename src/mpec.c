@@ -656,6 +656,29 @@ static void answer_from(bl_solution *s, const double *v, const layout *l, const 
                            : bl_verify(c, s->alpha, xa, v + l->u0, o->seq.base.tolerance, &s->res);
 }
 
+static const char *comp_name(const bl_mpec_options *o)
+{
+    return o->comp == BL_MPEC_PENALTY ? "penalty" : o->comp == BL_MPEC_RELAXATION ? "relaxation" : "homotopy";
+}
+
+/* The start's result s as the mpec method's where Ipopt did not run (the
+ * start had no answer: a limit, no equilibrium, unbounded): its status,
+ * alpha and residuals stand, under the method and flow asked for. */
+static void not_run(bl_solution *s, const bl_mpec_options *o, const char *start_kind,
+                    const char *start_why)
+{
+    s->method = "mpec";
+    s->flow = o->nonassociative ? "nonassociative" : "associative";
+    s->nlp_status = "not run";
+    s->comp = comp_name(o);
+    s->start_kind = start_kind;
+    s->start_why = start_why;
+    s->alpha_start = s->alpha;
+    s->alpha_ipopt = NAN;
+    s->pair_sum = NAN;
+    s->kept_start = s->status == BL_UNBOUNDED;
+}
+
 int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_error *err)
 {
     double t0 = bl_clock();
@@ -677,7 +700,8 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     if (rc) return -1;
     const char *start_kind = o->start == BL_MPEC_START_COLD    ? "cold"
                              : o->start == BL_MPEC_START_ASSOC ? "assoc"
-                                                               : "seqlp";
+                                                               : "seqlp",
+               *start_why = NULL;
     if (o->start == BL_MPEC_START_SEQLP && !s->x && s->status != BL_INTERRUPTED && !s->interrupted &&
         s->status != BL_UNBOUNDED && !(isinf(s->alpha_assoc) && s->alpha_assoc > 0)) {
         /* no certified answer to start from: the associative one (but an
@@ -686,7 +710,8 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
          * start) */
         bl_solution_free(s);
         if (bl_assoc_solve(m, &o->seq.base, &s, err)) return -1;
-        start_kind = "assoc (the sequence of LPs did not certify)";
+        start_kind = "assoc";
+        start_why = "the sequence of LPs had no answer";
     }
     /* An unbounded associative LP proves nothing without dilatancy (a
      * block wedged between supports, seqlp.c): the sequence of LPs, which
@@ -696,22 +721,24 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
         from_seq = 1;
         bl_solution_free(s);
         if (bl_seqlp_solve(m, &o->seq, &s, err)) return -1;
-        start_kind = "seqlp (the associative LP is unbounded)";
+        start_kind = "seqlp";
+        start_why = "the associative LP is unbounded";
     }
     int cold = o->start == BL_MPEC_START_COLD;
-    /* Ctrl-C during the start: its result is the answer (a sequence
-     * stopped by it keeps what it certified, and says so) */
+    /* Ctrl-C during the start: its result is the answer, as the start's
+     * (a sequence stopped by it keeps what it certified, and says so) */
     if (s->status == BL_INTERRUPTED || s->interrupted) {
+        *out = s;
+        return 0;
+    }
+    if (!cold && !s->x) {
+        /* no answer to start from: the start's status is the answer */
+        not_run(s, o, start_kind, start_why);
         *out = s;
         return 0;
     }
     double alpha_start = s->x && !cold ? s->alpha : NAN;
     double t_start = bl_clock() - t0;
-    if (!cold && !s->x) {
-        /* no answer to start from: the start's status is the answer */
-        *out = s;
-        return 0;
-    }
 
     const bl_model *mc = s->model;
     int d3 = mc->dim == 3;
@@ -732,8 +759,11 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     mult = calloc((size_t)p.m + 2 * (size_t)p.n, sizeof *mult);
     if (!v || !mult) goto oom;
     if (!cold) start_from(&p, &l, c, f, s->x, s->y, nonassoc, v);
-    /* a certified start (the sequence's answer to the same problem), kept */
-    if (from_seq && s->certified && nonassoc) {
+    /* a start that is itself an answer to the same problem, kept: the
+     * sequence's certified one, or for the associative flow the LP's
+     * verified one (Ipopt at penalty 0.5 ended at -0.5 on a pier, not
+     * complementary, and there was no answer) */
+    if (nonassoc ? from_seq && s->certified : !cold && s->verified) {
         v0 = malloc((size_t)p.n * sizeof *v0);
         if (!v0) goto oom;
         memcpy(v0, v, (size_t)p.n * sizeof *v0);
@@ -778,13 +808,14 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     s->flow = nonassoc ? "nonassociative" : "associative";
     s->status = status_of(r);
     s->alpha = v[0];
+    int stands = s->stands; /* the start's dead-load check, whatever Ipopt's alpha says */
     if (s->status == BL_OPTIMAL) bl_solution_answer_status(s);
     s->alpha_start = alpha_start;
     s->iterations = p.iterations;
     s->nlp_status = ipopt_word(r);
-    s->comp = o->comp == BL_MPEC_PENALTY ? "penalty"
-              : o->comp == BL_MPEC_RELAXATION ? "relaxation" : "homotopy";
+    s->comp = comp_name(o);
     s->start_kind = start_kind;
+    s->start_why = start_why;
     s->rows = p.m;
     s->cols = p.n;
     s->lp = "ipopt";
@@ -802,6 +833,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     if (v0 && converged && (!s->verified || s->alpha > alpha_start)) {
         answer_from(s, v0, &l, c, f, nonassoc, o, xa);
         s->kept_start = 1;
+        s->stands = stands; /* (penalty 0.5: Ipopt at -0.5 called a pier unstable) */
         if (s->verified) bl_solution_answer_status(s);
         else s->status = BL_NOT_COMPLEMENTARY;
     } else if (v0 && !converged) {
@@ -812,6 +844,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
         bl_status why = s->status;
         answer_from(s, v0, &l, c, f, nonassoc, o, xa);
         s->kept_start = s->verified;
+        s->stands = stands;
         if (s->verified) {
             bl_solution_answer_status(s);
             s->interrupted = why == BL_INTERRUPTED; /* Ctrl-C: kept for last() */

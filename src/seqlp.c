@@ -1066,6 +1066,27 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         *out = s;
         return 0;
     }
+    if (!sliding && !o->when_sliding) {
+        /* The non-associative flow asked for where no joint dilates (mu
+         * infinite or zero everywhere): the associative flow rule is the
+         * non-associative one there (no slip, or slip without opening), so
+         * the associative answer, verified against it, is the answer (a
+         * sequence from it had nothing to settle: a pier at mu = inf ran
+         * 100 certificates and ended "not certified") */
+        path_free(&pj);
+        s->method = "seqlp";
+        s->flow = "nonassociative";
+        s->alpha_assoc = s->alpha;
+        s->alpha_rigid = NAN;
+        s->assoc_is_solution = 1;
+        s->certified = s->has_mechanism && (s->status == BL_OPTIMAL || s->status == BL_UNSTABLE);
+        s->alpha_settled = s->alpha;
+        s->slip = o->slip;
+        s->lps = 1;
+        s->none_dilates = 1;
+        *out = s;
+        return 0;
+    }
     if ((!sliding && o->when_sliding) ||
         (!locked && ((s->status != BL_OPTIMAL && s->status != BL_UNSTABLE) || !s->has_mechanism))) {
         path_free(&pj);

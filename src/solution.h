@@ -121,6 +121,8 @@ typedef struct bl_solution {
     int time_up;             /* the time limit ended it, after an answer */
     int live_scales_dead;    /* the live load is the self weight along
                                 gravity: unbounded where it stands */
+    int none_dilates;        /* no joint has finite, non-zero friction:
+                                the associative answer, no sequence */
     double slip;             /* the slip threshold used, relative */
     int lps;                 /* LPs solved (all kinds) */
     int nhistory;
@@ -139,6 +141,7 @@ typedef struct bl_solution {
     const char *nlp_status;  /* Ipopt's outcome in words, static */
     const char *comp;        /* "penalty", "relaxation" or "homotopy", static */
     const char *start_kind;  /* where it started ("cold", "assoc", "seqlp"), static */
+    const char *start_why;   /* why from there, when not as asked; or NULL */
     double pair_sum;         /* sum of the complementary products at the end */
     double alpha_ipopt;      /* alpha of Ipopt's last point */
     int kept_start;          /* Ipopt's point was not a lower verified answer than

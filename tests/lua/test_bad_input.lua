@@ -145,6 +145,16 @@ local bad = {
   { "compare", function() compare { methods = { { method = "assoc", label = 5 } } } end, "compare",
     "'label'", "string" },
   { "compare", function() compare { bogus = 1 } end, "compare: unknown field 'bogus'", "'methods'" },
+  { "compare", function() compare { methods = { "assoc", nil, "seqlp" } } end, "compare",
+    "field 'methods' must be a list without gaps: entry 2 is missing" },
+  { "compare", function() compare { [1] = "assoc" } end, "compare", "give the methods as methods = { ... }" },
+  { "compare", function() compare { mps = "x.mps" } end, "compare", "field 'mps'" },
+  -- the sequence's settings with the associative flow: refused, as starts
+  -- were (they were ignored)
+  { "solve", function() solve { flow = "associative", beta = 0.5 } end, "solve",
+    "field 'beta' goes with flow = \"nonassociative\"" },
+  { "solve", function() solve { method = "mpec", flow = "associative", starts = 3 } end, "solve",
+    "field 'starts' goes with flow" },
   { "arch", function() arch { n = 5, thickness = 0.1 } end, "arch", "'radius'" },
   { "arch", function() arch { n = 5, radius = 1, thickness = -0.1 } end, "arch", "'thickness'" },
 }
@@ -164,6 +174,8 @@ T.ok(current() == m, "a rejected model{} does not replace the current model")
 -- A method called with a dot; a block number written as a float.
 local r0 = m:solve {}
 T.raises(function() r0.png("x.png") end, "r.png(file) with a dot", "png: call it on a result with a colon")
+T.raises(function() r0:png("x.svg") end, "r:png to a name ending in .svg", "png: the file name 'x.svg' ends in .svg",
+         "use r:svg(file)")
 T.raises(function() r0:svg("/nonexistent/x.svg", { view = "top" }) end, "a view of a 2D result",
          "svg: field 'view' is for 3D results")
 T.eq(m:interface { 1.0, 2.0, mu = 0.5 }, nil, "interface{ 1.0, 2.0 }: whole floats are block numbers")

@@ -231,4 +231,47 @@ do
        "mpec, cold start: 'not complementary' has alpha NaN, Ipopt's alpha kept in r.ipopt.alpha",
        ("%s %s %s"):format(r.status, tostring(r.alpha), tostring(r.ipopt.alpha)))
 end
+-- Found by a tester (2026-11-28).  A pier 1 x 2 at mu = 0.6 (alpha =
+-- b/h = 0.5, rocking; it stands):
+do
+  local function pier(mu)
+    model { mu = mu }
+    block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 2 }, { 0, 2 } } }
+    block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+  end
+  pier(0.6)
+  -- a weak penalty takes Ipopt to alpha = -0.5, not complementary: the
+  -- start stands, and with it the dead-load check (it read "unstable");
+  -- for the associative flow the LP's verified answer is that start (no
+  -- answer before)
+  for _, flow in ipairs { "nonassociative", "associative" } do
+    local r = solve { method = "mpec", flow = flow, penalty = 0.5 }
+    T.ok(r.status == "optimal" and r.stands and math.abs(r.alpha - 0.5) <= 1e-9 and r.ipopt.kept_start,
+         ("mpec, %s flow, penalty 0.5: the start's 0.5 stands, optimal, stands"):format(flow),
+         ("%s %s %s"):format(r.status, tostring(r.alpha), tostring(r.stands)))
+  end
+  -- a start with no answer (the time limit): the result is mpec's, Ipopt
+  -- "not run" (it read method "assoc", flow "associative")
+  local r = solve { method = "mpec", time_limit = 1e-9 }
+  T.ok(r.method == "mpec" and r.flow == "nonassociative" and r.ipopt.status == "not run" and
+       r.status == "time limit", "mpec stopped in its start: method mpec, Ipopt not run",
+       ("%s %s %s %s"):format(r.method, r.flow, r.ipopt.status, r.status))
+  -- compare{}'s notes say that the mpec row's start stands over Ipopt's
+  -- point, and where Ipopt ended
+  local c = compare { methods = { "seqlp", { method = "mpec", penalty = 0.5 } } }
+  T.ok(tostring(c):find("start kept (Ipopt", 1, true) ~= nil, "compare{}: an mpec row whose start stands says so")
+end
+-- The non-associative flow asked for where no joint dilates (mu = inf, or
+-- 0, everywhere): the associative answer, min(mu, b/h) for the pier,
+-- certified and verified without a sequence (at mu = inf it ran 100
+-- certificates and ended "not certified")
+for _, mu in ipairs { math.huge, 0 } do
+  model { mu = mu }
+  block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 2 }, { 0, 2 } } }
+  block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+  local r = solve { method = "seqlp" }
+  T.ok(r.certified and r.verified and r.none_dilates and math.abs(r.alpha - math.min(mu, 0.5)) <= 1e-9,
+       ("seqlp at mu = %g everywhere: min(mu, b/h), certified, no sequence"):format(mu),
+       ("%s %s %d LPs"):format(r.status, tostring(r.alpha), r.lps))
+end
 T.done()
