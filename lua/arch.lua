@@ -12,7 +12,7 @@
 -- H, carried by the extrados as dead point loads (doc/guide.md, arch{}).
 local report = require "blocklim.report"
 
-return function(M)
+return function(M, load_ratio)
   local allowed = { n = true, radius = true, span = true, thickness = true, angle = true,
                     centre = true, density = true, length = true, segments = true, fill = true }
   local function fail(msg) error("arch: " .. msg, 3) end
@@ -153,6 +153,11 @@ return function(M)
           if not (math.abs(f) < math.huge and math.abs(x) < math.huge) then
             fail(("field 'fill': the fill over voussoir %d weighs %s, beyond the range of numbers"):format(i + 1, f))
           end
+          local own = m:block_info(id).weight
+          if -f > load_ratio * own then
+            fail(("field 'fill': the fill over voussoir %d weighs %.6g, more than %g times the voussoir (%.6g): "
+                  .. "the solve would not hold it"):format(i + 1, -f, load_ratio, own))
+          end
           loads[#loads + 1] = { block = id, force = f,
                                 at = solid and { x, length * (k - 0.5) / segments, y } or { x, y } }
         end
@@ -160,8 +165,7 @@ return function(M)
     end
     for _, l in ipairs(loads) do
       local f = solid and { 0, 0, l.force } or { 0, l.force }
-      local ok, e = pcall(M.load, { dead = { block = l.block, at = l.at, force = f } })
-      if not ok then fail("field 'fill': " .. tostring(e)) end
+      M.load { dead = { block = l.block, at = l.at, force = f } }
     end
     -- Springings continue each end joint along the arch's tangent, away from it.
     local springs = {}

@@ -85,7 +85,7 @@ return function(core)
   end
 
   M.wall = require("blocklim.wall")(M)
-  M.arch = require("blocklim.arch")(M)
+  M.arch = require("blocklim.arch")(M, core.load_ratio)
   require("blocklim.compare")(M)
   require("blocklim.masonry")(M, require("blocklim.solid")(M))
 

@@ -56,7 +56,9 @@ return function(M)
   local function takes(method, flow, k)
     if k == "flow" then return method ~= "assoc" and method ~= "seqlp" end
     if mpec_only[k] then return method == "mpec" end
-    if seq_only[k] then return method ~= "assoc" and flow ~= "associative" end
+    -- the flow the row solves: its method's own, else the one given
+    if method == "assoc" then flow = "associative" elseif method == "seqlp" then flow = "nonassociative" end
+    if seq_only[k] then return flow ~= "associative" end
     return true
   end
 
@@ -213,7 +215,7 @@ return function(M)
         answered and ("%.6f"):format(r.alpha) or r.status:sub(1, 10), r.timings.total,
         r.iterations, r.method == "mpec" and "-" or tostring(r.lps or 1), g(e.equilibrium), g(e.yield), g(e.complementarity),
         g(flow_rule(e)), tostring(r.verified), row.agreement and ("%.4f"):format(row.agreement) or "-",
-        row.differing and tostring(row.differing) or "-", table.concat(notes, "; "))
+        row.differing and tostring(row.differing) or "-", table.concat(notes, "; ")):gsub("%s+$", "")
     end
     out[#out + 1] = "flow r.: the largest of the work, flow and dilatancy residuals; mech.: U . U1 / (|U| |U1|)"
     out[#out + 1] = "against the first row's mechanism, U the block velocities with rotations times the mean"

@@ -45,6 +45,9 @@ return function(M, fields)
   local function openings_field(fn, t, lo, hi, courses)
     local openings = t.openings or {}
     if type(openings) ~= "table" then fail(fn, "field 'openings' must be a list of {x0, x1, c0, c1}") end
+    local count = 0
+    for _ in pairs(openings) do count = count + 1 end
+    if count ~= #openings then fail(fn, "field 'openings' must be a list of {x0, x1, c0, c1}, without gaps or other keys") end
     for i, o in ipairs(openings) do
       if type(o) ~= "table" or #o ~= 4 then
         fail(fn, ("field 'openings' entry %d must be {x0, x1, c0, c1}"):format(i))

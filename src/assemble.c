@@ -25,6 +25,7 @@ void bl_system_free(bl_system *s)
     free(s->mu);
     free(s->twist);
     free(s->lead);
+    free(s->point_iface);
     free(s);
 }
 
@@ -59,7 +60,7 @@ bl_system *bl_system_start(const bl_model *m, int per_block, bl_error *err)
     return s;
 }
 
-int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max)
+int bl_system_allocate(bl_system *s, const bl_model *m, int nforce, int npoints, size_t nnz_max)
 {
     s->nforce = nforce;
     s->ncols = nforce + 1;
@@ -81,7 +82,10 @@ int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max)
     s->twist = calloc((size_t)npoints + 1, sizeof *s->twist);
     s->lead = malloc(((size_t)npoints + 1) * sizeof *s->lead);
     for (int p = 0; s->lead && p < npoints; p++) s->lead[p] = p;
-    return s->cohesion && s->mu && s->twist && s->lead && s->colptr && s->rowind && s->val && s->lo && s->hi && s->obj &&
+    s->point_iface = malloc(((size_t)npoints + 1) * sizeof *s->point_iface);
+    for (int k = 0, p = 0; s->point_iface && k < m->ninterfaces; k++)
+        for (int e = 0; e < (m->dim == 3 ? m->interfaces[k].np : 2); e++) s->point_iface[p++] = k;
+    return s->cohesion && s->mu && s->twist && s->lead && s->point_iface && s->colptr && s->rowind && s->val && s->lo && s->hi && s->obj &&
                    s->rhs && s->col_point && s->col_kind && s->col_nt && s->col_twist
                ? 0
                : -1;
@@ -211,7 +215,7 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
             nforce += point_columns(&m->interfaces[k], cohesion_share(m, &m->interfaces[k]), form,
                                     e, kind);
     double *fL = calloc((size_t)s->nrows, sizeof *fL);
-    if (!fL || bl_system_allocate(s, nforce, 2 * m->ninterfaces,
+    if (!fL || bl_system_allocate(s, m, nforce, 2 * m->ninterfaces,
                                   6 * (size_t)nforce + (size_t)s->nrows)) {
         free(fL);
         goto oom;
@@ -346,6 +350,42 @@ void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, do
         int p = s->col_point[j];
         force[2 * p] += s->W0 * x[j] * s->col_nt[2 * j];
         force[2 * p + 1] += s->W0 * x[j] * s->col_nt[2 * j + 1];
+    }
+}
+
+void bl_system_reactions(const bl_system *s, const bl_model *m, const double *x, double *R)
+{
+    int per = s->dim == 3 ? 6 : 3;
+    memset(R, 0, 6 * (size_t)m->nblocks * sizeof *R);
+    for (int j = 0; j < s->nforce; j++) {
+        const bl_interface *in = &m->interfaces[s->point_iface[s->col_point[j]]];
+        int sa = m->blocks[in->a].support, sb = m->blocks[in->b].support;
+        if (sa == sb) continue;
+        int sup = sa ? in->a : in->b, f = sa ? in->b : in->a, r = s->block_row[f];
+        /* the column's wrench on the free block, from its rows (unscaled:
+         * forces times W0, moments about the centroid times W0 L0) */
+        double w[6] = {0, 0, 0, 0, 0, 0};
+        for (int q = s->colptr[j]; q < s->colptr[j + 1]; q++) {
+            int row = s->rowind[q];
+            if (row < r || row >= r + per) continue;
+            w[row - r] += s->val[q] * x[j] / (s->row_scale ? s->row_scale[row] : 1.0);
+        }
+        bl_vec3 F, M, g;
+        if (s->dim == 3) {
+            F = bl_v3(w[0], w[1], w[2]);
+            M = bl_v3(w[3], w[4], w[5]);
+            g = m->blocks[f].centroid3;
+        } else {
+            F = bl_v3(w[0], w[1], 0.0);
+            M = bl_v3(0.0, 0.0, w[2]);
+            g = bl_v3(m->blocks[f].centroid.x, m->blocks[f].centroid.y, 0.0);
+        }
+        F = bl_v3_scale(F, s->W0);
+        M = bl_v3_add(bl_v3_scale(M, s->W0 * s->L0), bl_v3_cross(g, F));
+        /* what the free block exerts on the support: the opposite */
+        double *Rs = R + 6 * sup;
+        Rs[0] -= F.x, Rs[1] -= F.y, Rs[2] -= F.z;
+        Rs[3] -= M.x, Rs[4] -= M.y, Rs[5] -= M.z;
     }
 }
 

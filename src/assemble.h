@@ -78,6 +78,7 @@ typedef struct bl_system {
     double *twist;           /* 3D resultant model, per lead point: mu_t / rho,
                               * the twist column's bound per unit normal force */
     int npoints;             /* 2 per interface; 3D the vertices of the contact polygons */
+    int *point_iface;        /* per contact point: its interface */
     int *lead;               /* per contact point: the point whose columns carry its
                               * friction (itself; in the 3D resultant model the first
                               * vertex of its polygon, for the whole joint) */
@@ -143,13 +144,20 @@ void bl_system_free(bl_system *s);
  * live load fL, the columns before it filled up to entry nz (NULL with err
  * set, the system freed, when there is no live load). */
 bl_system *bl_system_start(const bl_model *m, int per_block, bl_error *err);
-int bl_system_allocate(bl_system *s, int nforce, int npoints, size_t nnz_max);
+int bl_system_allocate(bl_system *s, const bl_model *m, int nforce, int npoints, size_t nnz_max);
 bl_system *bl_system_finish(bl_system *s, int nz, double *fL, bl_error *err);
 
 /* Row `row` of the LP's dual y in the rows' units before the scaling of
  * light blocks (bl_system_finish): a block velocity times W0 (forces) or
  * W0 L0 (moments). */
 double bl_system_velocity(const bl_system *s, const double *y, int row);
+
+/* What the free blocks exert on each support through their joints, from
+ * x: per block 6 numbers, the force (x, y, z) and its moment about the
+ * origin (x, y, z), in physical units; 2D: z force and x, y moment 0.
+ * Read from the columns' own rows, so that every column counts as the
+ * equilibrium counts it (3D couples, shear at a joint's centroid). */
+void bl_system_reactions(const bl_system *s, const bl_model *m, const double *x, double *R);
 
 /* Physical contact forces (n0, t0, n1, t1 per interface) from x. */
 void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, double *force);

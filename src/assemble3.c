@@ -233,7 +233,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
                                         : 0);
     }
     double *fL = calloc((size_t)s->nrows, sizeof *fL);
-    if (!fL || bl_system_allocate(s, nforce, npoints, 12 * (size_t)nforce + (size_t)s->nrows + 6)) {
+    if (!fL || bl_system_allocate(s, m, nforce, npoints, 12 * (size_t)nforce + (size_t)s->nrows + 6)) {
         free(fL);
         goto oom;
     }

@@ -307,6 +307,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
             bl_system_forces(sys, m, x, s->force);
             bl_system_mechanism(sys, m, y, s->u);
         }
+        bl_system_reactions(sys, m, x, s->reaction);
         bl_solution_classify(s);
         s->verified = bl_verify(sys, s->alpha, x, y, o->tolerance, &s->res);
         if (bl_solution_keep(s, x, sys->ncols, y, sys->nrows)) {

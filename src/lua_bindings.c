@@ -120,9 +120,16 @@ static double number_field(lua_State *L, int idx, const char *fn, const char *f,
     if (sign == NONNEG && v < 0) fail(L, "%s: field '%s' must be >= 0, got %g", fn, f, v);
     if (sign == POSITIVE && !(v > 0))
         fail(L, "%s: field '%s' must be > 0, got %g", fn, f, v);
-    int mu = strcmp(f, "mu") == 0;
-    if (sign != ANY && isinf(v) && !mu) fail(L, "%s: field '%s' must be finite", fn, f);
-    if (mu && isfinite(v) && v > BL_MU_MAX)
+    if (sign != ANY && isinf(v) && strcmp(f, "mu") != 0)
+        fail(L, "%s: field '%s' must be finite", fn, f);
+    return v;
+}
+
+/* Field 'mu' of command fn: >= 0, at most BL_MU_MAX or infinite. */
+static double mu_field(lua_State *L, int idx, const char *fn, double def)
+{
+    double v = number_field(L, idx, fn, "mu", def, NONNEG);
+    if (isfinite(v) && v > BL_MU_MAX)
         fail(L, "%s: field 'mu' must be at most %g, or math.huge for joints that never slide, got %g", fn,
              BL_MU_MAX, v);
     return v;
@@ -349,7 +356,7 @@ static int model_new(lua_State *L)
         name = lua_tostring(L, -1);
         lua_pop(L, 1);
     }
-    double mu = number_field(L, 1, "model", "mu", 0.65, NONNEG);
+    double mu = mu_field(L, 1, "model", 0.65);
     double c = number_field(L, 1, "model", "cohesion", 0.0, NONNEG);
     double rho = number_field(L, 1, "model", "density", 1.0, POSITIVE);
     double th = number_field(L, 1, "model", "thickness", 1.0, POSITIVE);
@@ -553,7 +560,7 @@ static int model_interface(lua_State *L)
     if (m->blocks[s.a].support && m->blocks[s.b].support)
         return fail(L, "interface: blocks %d and %d are both supports", s.a + 1, s.b + 1);
     s.has_mu = field(L, 2, "mu") ? (lua_pop(L, 1), 1) : 0;
-    s.mu = number_field(L, 2, "interface", "mu", 0, NONNEG);
+    s.mu = mu_field(L, 2, "interface", 0);
     s.has_cohesion = field(L, 2, "cohesion") ? (lua_pop(L, 1), 1) : 0;
     s.cohesion = number_field(L, 2, "interface", "cohesion", 0, NONNEG);
     if (m->dim == 2 && (field_given(L, 2, "model") || field_given(L, 2, "mu_t")))
@@ -1235,8 +1242,9 @@ static int model_solve(lua_State *L)
     so.progress = boolean_field(L, 2, "solve", "progress", isatty(STDERR_FILENO));
     so.path = field_given(L, 2, "path") ? boolean_field(L, 2, "solve", "path", 0) : -1;
     so.when_sliding = !field_given(L, 2, "method") && !field_given(L, 2, "flow");
-    if (!flow) {
-        /* the sequence's settings, which an associative answer never uses */
+    if (!flow && mo.start != BL_MPEC_START_SEQLP) {
+        /* the sequence's settings, which an associative answer never uses
+         * (but Ipopt's start from the sequence does) */
         static const char *const seq[] = {"starts", "seed", "nearest", "path", "beta", "settle",
                                           "slip", "lps", NULL};
         for (int k = 0; seq[k]; k++)

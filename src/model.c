@@ -284,7 +284,6 @@ int bl_model_check_point_load(const bl_model *m, const bl_point_load *l, bl_erro
 
 int bl_model_add_point_load(bl_model *m, const bl_point_load *l, bl_error *err)
 {
-    if (bl_model_check_point_load(m, l, err)) return -1;
     if (RESERVE(m->loads, m->cap_loads, m->nloads + 1))
         return bl_error_set(err, "load: out of memory");
     m->loads[m->nloads++] = *l;

@@ -155,8 +155,8 @@ int bl_model_add_joint(bl_model *m, const bl_joint_spec *s, bl_error *err);
  * masonry carries such a load. */
 #define BL_LOAD_RATIO 1e12
 
-/* Whether a point load can be added (BL_LOAD_RATIO).  0, or -1 with a
- * message. */
+/* Whether a point load can be added (BL_LOAD_RATIO): 0, or -1 with a
+ * message.  Adding one (after that check) fails only out of memory. */
 int bl_model_check_point_load(const bl_model *m, const bl_point_load *l, bl_error *err);
 int bl_model_add_point_load(bl_model *m, const bl_point_load *l, bl_error *err);
 

@@ -650,6 +650,7 @@ static void answer_from(bl_solution *s, const double *v, const layout *l, const 
         bl_system_forces(c, mc, xa, s->force);
         bl_system_mechanism(c, mc, v + l->u0, s->u);
     }
+    bl_system_reactions(c, mc, xa, s->reaction);
     bl_solution_classify(s);
     s->verified = nonassoc ? bl_verify_nonassoc(c, f, s->alpha, xa, v + l->u0, o->seq.base.tolerance,
                                                 o->seq.slip, &s->res)
@@ -676,7 +677,8 @@ static void not_run(bl_solution *s, const bl_mpec_options *o, const char *start_
     s->alpha_start = s->alpha;
     s->alpha_ipopt = NAN;
     s->pair_sum = NAN;
-    s->kept_start = s->status == BL_UNBOUNDED;
+    s->kept_start = 0;
+    s->iterations = 0; /* Ipopt's */
 }
 
 int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_error *err)
@@ -703,11 +705,12 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
                                                                : "seqlp",
                *start_why = NULL;
     if (o->start == BL_MPEC_START_SEQLP && !s->x && s->status != BL_INTERRUPTED && !s->interrupted &&
-        s->status != BL_UNBOUNDED && !(isinf(s->alpha_assoc) && s->alpha_assoc > 0)) {
+        s->status != BL_TIME_LIMIT && s->status != BL_UNBOUNDED &&
+        !(isinf(s->alpha_assoc) && s->alpha_assoc > 0)) {
         /* no certified answer to start from: the associative one (but an
          * unbounded sequence, no mechanism for any flow rule, is the
          * answer, and where the associative LP is unbounded it is no
-         * start) */
+         * start; after the time limit nothing more is solved) */
         bl_solution_free(s);
         if (bl_assoc_solve(m, &o->seq.base, &s, err)) return -1;
         start_kind = "assoc";
@@ -763,7 +766,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
      * sequence's certified one, or for the associative flow the LP's
      * verified one (Ipopt at penalty 0.5 ended at -0.5 on a pier, not
      * complementary, and there was no answer) */
-    if (nonassoc ? from_seq && s->certified : !cold && s->verified) {
+    if (nonassoc ? from_seq && s->certified : !from_seq && !cold && s->verified) {
         v0 = malloc((size_t)p.n * sizeof *v0);
         if (!v0) goto oom;
         memcpy(v0, v, (size_t)p.n * sizeof *v0);

@@ -1020,9 +1020,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         double mu = m->interfaces[k].mu;
         sliding |= isfinite(mu) && mu > 0.0;
     }
-    if (!sliding && o->when_sliding) base.weighted = weighted;
+    if (!sliding) base.weighted = weighted;
     path_job pj = {0};
-    if (path_start(m, o, &pj, err)) return -1;
+    if (sliding && path_start(m, o, &pj, err)) return -1;
     if (pj.beside) base.dead_load = BL_DEAD_AFTER; /* the path has the other core */
     if (bl_assoc_solve(m, &base, &s, err)) {
         path_free(&pj);
@@ -1079,7 +1079,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         s->alpha_assoc = s->alpha;
         s->alpha_rigid = NAN;
         s->assoc_is_solution = 1;
-        s->certified = s->has_mechanism && (s->status == BL_OPTIMAL || s->status == BL_UNSTABLE);
+        s->certified = s->has_mechanism && s->verified && (s->status == BL_OPTIMAL || s->status == BL_UNSTABLE);
         s->alpha_settled = s->alpha;
         s->slip = o->slip;
         s->lps = 1;
@@ -1309,6 +1309,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             bl_system_forces(r.cone, mc, r.best_x, s->force);
             bl_system_mechanism(r.fixed, mc, r.best_y, s->u);
         }
+        bl_system_reactions(r.cone, mc, r.best_x, s->reaction);
         bl_solution_classify(s);
         double tv = bl_clock();
         s->verified = bl_verify_nonassoc(r.cone, r.fixed, s->alpha, r.best_x, r.best_y,

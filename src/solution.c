@@ -62,7 +62,8 @@ bl_solution *bl_solution_new(bl_model *c)
     s->state = calloc(ni + 1, sizeof *s->state);
     s->hinge = calloc(ni + 1, sizeof *s->hinge);
     s->speed = calloc(ni + 1, sizeof *s->speed);
-    if (!s->u || !s->force || !s->state || !s->hinge || !s->speed) {
+    s->reaction = calloc(6 * nb + 1, sizeof *s->reaction);
+    if (!s->u || !s->force || !s->state || !s->hinge || !s->speed || !s->reaction) {
         bl_solution_free(s);
         return NULL;
     }
@@ -106,6 +107,7 @@ void bl_solution_free(bl_solution *s)
     free(s->state);
     free(s->hinge);
     free(s->speed);
+    free(s->reaction);
     free(s->history);
     free(s->start);
     free(s->x);
@@ -295,22 +297,9 @@ void bl_solution_resultants(const bl_solution *s, bl_vec3 *F, double *N, bl_vec3
 
 void bl_solution_reactions(const bl_solution *s, bl_vec3 *R, bl_vec3 *M)
 {
-    const bl_model *m = s->model;
-    for (int i = 0; i < m->nblocks; i++) R[i] = M[i] = bl_v3(0, 0, 0);
-    const double *f = s->force;
-    for (int k = 0; k < m->ninterfaces; k++) {
-        const bl_interface *in = &m->interfaces[k];
-        /* the free block a pushes a support b with f, a free block b a
-         * support a with -f */
-        int sup = m->blocks[in->b].support ? in->b : m->blocks[in->a].support ? in->a : -1;
-        double sign = sup == in->b ? 1.0 : -1.0;
-        for (int e = 0; e < npoints(m, in); e++) {
-            bl_vec3 p, nrm, fe;
-            f = point_force(m, in, e, f, &p, &nrm, &fe);
-            if (sup < 0) continue;
-            fe = bl_v3_scale(fe, sign);
-            R[sup] = bl_v3_add(R[sup], fe);
-            M[sup] = bl_v3_add(M[sup], bl_v3_cross(p, fe));
-        }
+    for (int i = 0; i < s->model->nblocks; i++) {
+        const double *w = s->reaction + 6 * i;
+        R[i] = bl_v3(w[0], w[1], w[2]);
+        M[i] = bl_v3(w[3], w[4], w[5]);
     }
 }

@@ -81,6 +81,9 @@ typedef struct bl_solution {
                                 live load does unit work); 0 for supports */
     double *force;           /* 2D, 4 per interface: n0, t0, n1, t1 at p[0], p[1];
                                 3D, 3 per polygon vertex: n, t2, t3 */
+    double *reaction;        /* 6 per block: what the free blocks exert on
+                                a support, force and moment about the
+                                origin (bl_system_reactions); 0 elsewhere */
     /* the scaled answer on the Coulomb-cone system (assemble.h), owned,
      * NULL when there is none: its columns (forces, then alpha) and its
      * row multipliers (the mechanism); a start for another method */
@@ -182,7 +185,7 @@ void bl_solution_resultants(const bl_solution *s, bl_vec3 *F, double *N, bl_vec3
 
 /* What the free blocks exert on each support i: the force R[i] and its
  * moment M[i] about the origin (global axes; in 2D only M[i].z is not
- * zero), summed over the joints' points; zero for free blocks. */
+ * zero), from s->reaction; zero for free blocks. */
 void bl_solution_reactions(const bl_solution *s, bl_vec3 *R, bl_vec3 *M);
 
 /* 3D: whether vertex e of interface k's contact polygon stays closed (its

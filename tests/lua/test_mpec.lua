@@ -261,6 +261,23 @@ do
   local c = compare { methods = { "seqlp", { method = "mpec", penalty = 0.5 } } }
   T.ok(tostring(c):find("start kept (Ipopt", 1, true) ~= nil, "compare{}: an mpec row whose start stands says so")
 end
+-- Ipopt for the associative flow started from the sequence's
+-- (non-associative) answer: that start is no answer to this problem and
+-- is not kept; Ipopt's own answer is the LP's (it read "not complementary")
+do
+  model { mu = 0.65 }
+  wall { courses = require("walls").W1, unit = { 0.4, 0.175 } }
+  local lp = solve { flow = "associative" }.alpha
+  local r = solve { method = "mpec", flow = "associative", start = "seqlp" }
+  T.ok(r.status == "optimal" and r.verified and math.abs(r.alpha - lp) <= 1e-7 * lp and not r.ipopt.kept_start,
+       "mpec, associative flow from the sequence's answer: the LP's alpha (tolerance 1e-7)",
+       ("%s %s vs %s"):format(r.status, tostring(r.alpha), tostring(lp)))
+  -- compare{} gives a seqlp row the sequence's settings even where the
+  -- common flow is the associative one (lps = 2 was dropped)
+  local c = compare { methods = { "seqlp" }, flow = "associative", lps = 2 }
+  T.ok(#c.rows[1].result.history[1] <= 3, "compare{ flow = 'associative', lps = 2 }: the seqlp row keeps lps",
+       tostring(#c.rows[1].result.history[1]))
+end
 -- The non-associative flow asked for where no joint dilates (mu = inf, or
 -- 0, everywhere): the associative answer, min(mu, b/h) for the pier,
 -- certified and verified without a sequence (at mu = inf it ran 100
