@@ -66,8 +66,7 @@ function M.point_loads(m, n, t, fn, ratio)
   local x0, x1 = o[1], o[2]
 
   -- the blocks by the buckets of [x0, x1] they reach over
-  local blocks, nbuckets = {}, 256
-  local buckets = {}
+  local nbuckets, buckets = 256, {}
   for i = 1, nbuckets do buckets[i] = {} end
   local function bucket(x) return math.min(nbuckets, math.max(1, math.floor((x - x0) / (x1 - x0) * nbuckets) + 1)) end
   local xs = { x0, x1 }
@@ -80,7 +79,6 @@ function M.point_loads(m, n, t, fn, ratio)
     end
     if hi > x0 and lo < x1 then
       b.id = i
-      blocks[#blocks + 1] = b
       for k = bucket(lo), bucket(hi) do local l = buckets[k]; l[#l + 1] = b end
     end
   end
