@@ -49,7 +49,9 @@ return function(M, fields)
     for _ in pairs(openings) do count = count + 1 end
     if count ~= #openings then fail(fn, "field 'openings' must be a list of {x0, x1, c0, c1}, without gaps or other keys") end
     for i, o in ipairs(openings) do
-      if type(o) ~= "table" or #o ~= 4 then
+      local keys = 0
+      if type(o) == "table" then for _ in pairs(o) do keys = keys + 1 end end
+      if type(o) ~= "table" or #o ~= 4 or keys ~= 4 then
         fail(fn, ("field 'openings' entry %d must be {x0, x1, c0, c1}"):format(i))
       end
       for j = 1, 4 do
@@ -69,16 +71,19 @@ return function(M, fields)
   end
 
   -- pieces {x0, x1, ...} of course c (1 = the lowest) less the openings
-  -- that reach it, cut at their jambs
+  -- that reach it, cut at their jambs; a jamb within JAMB (in units of L)
+  -- of a joint is at the joint (1.05 / 0.35 = 3 + 4e-16 made a sliver
+  -- block of no volume)
+  local JAMB = 1e-6
   local function cut(pieces, openings, c)
     for _, o in ipairs(openings) do
       if c >= o[3] and c <= o[4] then
         local kept = {}
         for _, p in ipairs(pieces) do
-          if p[2] <= o[1] or p[1] >= o[2] then kept[#kept + 1] = p
+          if p[2] <= o[1] + JAMB or p[1] >= o[2] - JAMB then kept[#kept + 1] = p
           else
-            if p[1] < o[1] then kept[#kept + 1] = { p[1], o[1], table.unpack(p, 3) } end
-            if p[2] > o[2] then kept[#kept + 1] = { o[2], p[2], table.unpack(p, 3) } end
+            if o[1] - p[1] > JAMB then kept[#kept + 1] = { p[1], o[1], table.unpack(p, 3) } end
+            if p[2] - o[2] > JAMB then kept[#kept + 1] = { o[2], p[2], table.unpack(p, 3) } end
           end
         end
         pieces = kept

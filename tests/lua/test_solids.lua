@@ -676,6 +676,15 @@ do
   local _, _, left = build { { 1.5, 3, 2, 4 } }
   local _, _, right = build { { 3, 4.5, 2, 4 } }
   T.near(left, right, 1e-9 * left, "facade{ openings }: a window and its mirror image, the same alpha")
+  -- a jamb given in metres over L lands 4e-16 past a joint (1.05 / 0.35 =
+  -- 3.0000000000000004): at the joint (it made a sliver block: "face 1 has
+  -- zero area"), as {2, 4, 1, 2}
+  local n2, W2 = build { { 1.05 / 0.35 - 1, 4, 1, 2 } }
+  T.ok(n2 == n1 and math.abs(W2 - W1) <= 1e-12, "facade{ openings }: a jamb 4e-16 past a joint is at the joint",
+       ("%d %.15g"):format(n2, W2))
+  T.raises(function() facade { length = 6, returns = 2, courses = 6, unit = { 0.4, 0.2 },
+                               openings = { { 1, 2, 1, 2, foo = 1 } } } end,
+           "facade{ openings } with another key in an entry refused", "facade: field 'openings' entry 1 must be")
   T.raises(function() facade { length = 6, returns = 2, courses = 6, unit = { 0.4, 0.2 }, openings = { { 0.2, 1, 1, 1 } } } end,
            "facade{ openings } reaching into a return wall refused",
            "facade: field 'openings' entry 1 must have 0.5 <= x0 < x1 <= 5.5")
