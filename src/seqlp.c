@@ -406,6 +406,19 @@ static int start_number(const bl_solution *s)
     return st->continues ? st->continues : s->nstarts;
 }
 
+/* LP lp of the start (numbered as in its history; its certificate: what =
+ * "'s certificate") ended the run with status st: *stop, and, unless
+ * Ctrl-C or the time limit (said elsewhere), a note that says where (a
+ * note on an earlier start's infeasible LP read as the cause of
+ * "numerical trouble"). */
+static void stopped(bl_solution *s, bl_lp_status *stop, bl_lp_status st, int lp, const char *what)
+{
+    *stop = st;
+    if (st != BL_LP_INTERRUPTED && st != BL_LP_TIME_LIMIT)
+        snprintf(s->note, sizeof s->note, "start %d, LP %d%s ended with %s", start_number(s), lp, what,
+                 bl_status_name(bl_status_of_lp(st)));
+}
+
 /* Writes into s->note which blocks the Farkas ray of the infeasible fixed
  * LP weighs on: those whose equilibrium the capacities cannot meet. */
 static void name_blocks(run *r, bl_solution *s, int lp)
@@ -636,14 +649,14 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
              * unbounded, and the start ends uncertified. */
             snprintf(s->note, sizeof s->note,
                      "start %d, LP %d: the relaxed friction capacities grew without bound",
-                     start_number(s), j + 1);
+                     start_number(s), j + 2);
             return 0;
         }
         if (st != BL_LP_OPTIMAL) {
             /* Infeasible: the relaxed normal forces cannot carry some block
              * by friction alone (DESIGN 2.4); this start ends uncertified. */
             if (st == BL_LP_INFEASIBLE) name_blocks(r, s, j + 1);
-            else *stop = st;
+            else stopped(s, stop, st, j + 2, "");
             return 0;
         }
         const double *x = bl_lp_primal(r->lp_fixed), *y = bl_lp_dual(r->lp_fixed);
@@ -694,7 +707,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
                 return 1;
             }
             if (cs != BL_LP_INFEASIBLE) {
-                *stop = cs;
+                stopped(s, stop, cs, j + 2, "'s certificate");
                 return 0;
             }
             fails++;
