@@ -55,8 +55,9 @@ return function(M, fields)
         fail(fn, ("field 'openings' entry %d must be {x0, x1, c0, c1}"):format(i))
       end
       for j = 1, 4 do
-        if type(o[j]) ~= "number" then
-          fail(fn, ("field 'openings' entry %d must be {x0, x1, c0, c1} of numbers"):format(i))
+        if type(o[j]) ~= "number" or o[j] ~= o[j] then
+          fail(fn, ("field 'openings' entry %d must be {x0, x1, c0, c1} of numbers, got %s as number %d")
+            :format(i, tostring(o[j]), j))
         end
       end
       if not (o[1] < o[2] and o[3] <= o[4] and o[1] >= lo and o[2] <= hi) then

@@ -283,6 +283,9 @@ do
   T.raises(function() facade { length = 4, returns = 1, courses = 3, unit = { 0.4, 0.2 },
                                openings = { { 1, 2, 1, 1 }, [3] = { 2, 3, 1, 1 } } } end,
            "facade{ openings } with a gap refused", "facade: field 'openings' must be a list")
+  T.raises(function() facade { length = 4, returns = 1, courses = 3, unit = { 0.4, 0.2 },
+                               openings = { { 1, 2, 0 / 0, 2 } } } end,
+           "facade{ openings } with a NaN course names it", "entry 1 must be {x0, x1, c0, c1} of numbers", "number 3")
   -- a distributed load is for 2D models
   box { size = { 1, 1, 1 } }
   T.raises(function() load { dead = { over = { 0, 1 }, q = 1 } } end, "a distributed load in 3D refused",
