@@ -249,28 +249,6 @@ void bl_solution_classify(bl_solution *s)
     }
 }
 
-/* Point e of interface k (e < 2 in 2D): where it lies (p) and the force
- * that a exerts on b there, from its normal and shear(s) at f; returns f
- * past them. */
-static const double *point_force(const bl_model *m, const bl_interface *in, int e, const double *f,
-                                 bl_vec3 *p, bl_vec3 *nrm, bl_vec3 *fe)
-{
-    if (m->dim == 3) {
-        *p = in->poly[e];
-        *nrm = in->n3;
-        *fe = bl_v3_add(bl_v3_scale(in->n3, f[0]),
-                        bl_v3_add(bl_v3_scale(in->t2, f[1]), bl_v3_scale(in->t3, f[2])));
-        return f + 3;
-    }
-    *p = bl_v3(in->p[e].x, in->p[e].y, 0.0);
-    *nrm = bl_v3(in->normal.x, in->normal.y, 0.0);
-    bl_vec3 tau = bl_v3(-in->normal.y, in->normal.x, 0.0);
-    *fe = bl_v3_add(bl_v3_scale(*nrm, f[0]), bl_v3_scale(tau, f[1]));
-    return f + 2;
-}
-
-static int npoints(const bl_model *m, const bl_interface *in) { return m->dim == 3 ? in->np : 2; }
-
 void bl_solution_resultants(const bl_solution *s, bl_vec3 *F, double *N, bl_vec3 *C)
 {
     const bl_model *m = s->model;
@@ -279,10 +257,23 @@ void bl_solution_resultants(const bl_solution *s, bl_vec3 *F, double *N, bl_vec3
         const bl_interface *in = &m->interfaces[k];
         bl_vec3 force = {0, 0, 0}, moment = {0, 0, 0}, mid = {0, 0, 0};
         double n = 0.0;
-        int np = npoints(m, in);
+        int np = m->dim == 3 ? in->np : 2;
         for (int e = 0; e < np; e++) {
+            /* normal and shear(s) at point e: 3 numbers in 3D, 2 in 2D */
             bl_vec3 p, nrm, fe;
-            f = point_force(m, in, e, f, &p, &nrm, &fe);
+            if (m->dim == 3) {
+                p = in->poly[e];
+                nrm = in->n3;
+                fe = bl_v3_add(bl_v3_scale(in->n3, f[0]),
+                               bl_v3_add(bl_v3_scale(in->t2, f[1]), bl_v3_scale(in->t3, f[2])));
+                f += 3;
+            } else {
+                p = bl_v3(in->p[e].x, in->p[e].y, 0.0);
+                nrm = bl_v3(in->normal.x, in->normal.y, 0.0);
+                bl_vec3 tau = bl_v3(-in->normal.y, in->normal.x, 0.0);
+                fe = bl_v3_add(bl_v3_scale(nrm, f[0]), bl_v3_scale(tau, f[1]));
+                f += 2;
+            }
             double ne = bl_v3_dot(fe, nrm);
             force = bl_v3_add(force, fe);
             moment = bl_v3_add(moment, bl_v3_scale(p, ne));
