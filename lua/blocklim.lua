@@ -88,6 +88,7 @@ return function(core)
   M.arch = require("blocklim.arch")(M, core.load_ratio)
   require("blocklim.compare")(M)
   require("blocklim.masonry")(M, require("blocklim.solid")(M))
+  M.import = require("blocklim.import")(M)
 
   -- The commands written in Lua.  Whatever goes wrong inside one (its own
   -- checks, or a command it calls, such as block{} for each block of a
@@ -125,7 +126,7 @@ return function(core)
     end
   end
   for _, name in ipairs { "wall", "arch", "compare", "box", "extrude", "dome", "facade", "corner",
-                          "pier", "bond" } do
+                          "pier", "bond", "import" } do
     commands[name] = true
     M[name] = guard(name, M[name])
   end
@@ -137,7 +138,7 @@ return function(core)
   -- from a stock Lua may do the same: require("blocklim").globals()).
   local exported = { "model", "block", "contacts", "interface", "load", "solve",
                      "stats", "wall", "arch", "current", "last", "compare", "box", "extrude", "dome", "facade",
-                     "corner", "pier", "bond" }
+                     "corner", "pier", "bond", "import" }
   function M.globals(env)
     env = env or _G
     for _, n in ipairs(exported) do env[n] = M[n] end
