@@ -34,6 +34,290 @@ local function top(b, x)
   return best, slope
 end
 
+-- Field q: a function of the point of the top surface (a number w becomes
+-- the function that gives w).
+local function q_field(t, fail, unit, args)
+  local q = t.q
+  if type(q) == "number" then
+    if not finite(q) or q < 0 then
+      fail(("field 'q' must be a finite number >= 0 (load per unit %s, pressing down), got %s")
+           :format(unit, show(q)))
+    end
+    return function() return q end
+  elseif type(q) ~= "function" then
+    fail(("field 'q' must be a number or a function q(%s) (load per unit %s, pressing down), got %s")
+         :format(args, unit, type(q)))
+  end
+  return q
+end
+
+-- q at a point (x, y) or (x, y, z), checked
+local function q_at(q, fail, ...)
+  local ok, v = pcall(q, ...)
+  if not ok then fail("field 'q': " .. tostring(v)) end
+  if not finite(v) or v < 0 then
+    local at = {}
+    for i, c in ipairs { ... } do at[i] = ("%.6g"):format(c) end
+    fail(("field 'q' must give a finite number >= 0, got %s at (%s)"):format(show(v), table.concat(at, ", ")))
+  end
+  return v
+end
+
+-- The point loads of the shares share[id] = {block, F, moments...} of the
+-- blocks in order, each made by point(block, F, moments...) once it is
+-- checked against the block's weight.
+local function point_loads_of(share, order, landed, region, fail, ratio, point)
+  if not landed then
+    fail(("field 'over' %s: no block lies below it"):format(region))
+  end
+  table.sort(order)
+  local loads = {}
+  for _, id in ipairs(order) do
+    local e = share[id]
+    local b, F = e[1], e[2]
+    if F > 0 then
+      local bad = not (F <= ratio * b.weight)
+      for k = 3, #e do bad = bad or not finite(e[k]) end
+      if bad then
+        fail(("field 'q' gives block %d a load of %.6g, more than %g times its weight (%.6g): "
+              .. "the solve would not hold it"):format(id, F, ratio, b.weight))
+      end
+      loads[#loads + 1] = point(b, table.unpack(e, 2))
+    end
+  end
+  if #loads == 0 then
+    fail(("field 'over' %s: the load lands on supports only (or q is 0 on every free block), "
+          .. "and loads on supports do nothing"):format(region))
+  end
+  return loads
+end
+
+-- 3D: { over = {{x0, y0}, {x1, y1}}, q = w }, w per unit area of plan
+-- pressing down (along -z) on the faces the model shows from above in the
+-- rectangle.  The plan is cut into slabs at every abscissa where a face's
+-- outline has a corner or crosses another's (or the rectangle's sides), so
+-- that in a slab no two outlines cross; each slab into trapezoids between
+-- neighbouring outline edges; each trapezoid goes to the highest face above
+-- it.  A block's share is its resultant, the force (0, 0, -∫q) through
+-- (x̄, ȳ) = ∫(x, y) q / ∫q, at its top there, or, where its top does not
+-- reach over (x̄, ȳ), the same force on its top at the centroid of its
+-- largest loaded part, with the moment that moves it to (x̄, ȳ).
+local function point_loads_3d(m, n, t, fail, ratio)
+  local o = t.over
+  local function corner(c) return type(c) == "table" and #c == 2 and finite(c[1]) and finite(c[2]) end
+  if type(o) ~= "table" or #o ~= 2 or not corner(o[1]) or not corner(o[2])
+     or not (o[1][1] < o[2][1] and o[1][2] < o[2][2]) then
+    fail("field 'over' must be {{x0, y0}, {x1, y1}}, the corners of a rectangle in plan with x0 < x1 and y0 < y1")
+  end
+  local q = q_field(t, fail, "area", "x, y, z")
+  local pieces = type(t.q) == "number" and 1 or 2
+  local x0, y0, x1, y1 = o[1][1], o[1][2], o[2][1], o[2][2]
+  local tiny = 1e-12 * math.max(x1 - x0, y1 - y0)
+
+  -- The faces on which other blocks sit over their whole area are hidden:
+  -- per block, the interfaces on its faces that look up (outward normal,
+  -- a point, area), from the model's contacts as stats() finds them.
+  local seated = {}
+  local ok, st = pcall(m.stats, m)
+  for k = 1, ok and st.interfaces or 0 do
+    local j = m:interface_info(k)
+    local nz = j.normal[3]
+    if nz ~= 0 then
+      local b, sign = nz > 0 and j.a or j.b, nz > 0 and 1 or -1
+      seated[b] = seated[b] or {}
+      table.insert(seated[b], { normal = { sign * j.normal[1], sign * j.normal[2], sign * nz },
+                                at = j.points[1], area = j.area })
+    end
+  end
+  local plane_tol = math.max(ok and st.tol or 0, tiny)
+  local function hidden(i, p, nx, ny, nz, area)
+    local len, sum = math.sqrt(nx * nx + ny * ny + nz * nz), 0
+    for _, s in ipairs(seated[i] or {}) do
+      local u, r = s.normal, s.at
+      if (u[1] * nx + u[2] * ny + u[3] * nz) / len > 1 - 1e-9
+         and math.abs(((r[1] - p[1]) * nx + (r[2] - p[2]) * ny + (r[3] - p[3]) * nz) / len) <= plane_tol then
+        sum = sum + s.area
+      end
+    end
+    return sum >= area * (1 - 1e-9)
+  end
+
+  -- the faces that look up and are not hidden: outline in plan, plane
+  -- z = c0 + cx x + cy y; their edges (not along y), from the lower x to
+  -- the higher
+  local faces, edges, xs = {}, {}, { x0, x1 }
+  local function edge(face, p, r)
+    if p[1] > r[1] then p, r = r, p end
+    if r[1] - p[1] > tiny then edges[#edges + 1] = { face = face, ax = p[1], ay = p[2], bx = r[1], by = r[2] } end
+  end
+  for i = 1, n do
+    local b = m:block_info(i)
+    local v = b.vertices
+    local lx, ly, hx, hy = math.huge, math.huge, -math.huge, -math.huge
+    for _, p in ipairs(v) do
+      lx, ly, hx, hy = math.min(lx, p[1]), math.min(ly, p[2]), math.max(hx, p[1]), math.max(hy, p[2])
+    end
+    if hx > x0 and lx < x1 and hy > y0 and ly < y1 then
+      b.id, b.top = i, {}
+      for _, f in ipairs(b.faces) do
+        local nx, ny, nz = 0, 0, 0 -- Newell's normal, outward
+        for k, a in ipairs(f) do
+          local p, r = v[a], v[f[k % #f + 1]]
+          nx, ny, nz = nx + (p[2] - r[2]) * (p[3] + r[3]), ny + (p[3] - r[3]) * (p[1] + r[1]),
+                       nz + (p[1] - r[1]) * (p[2] + r[2])
+        end
+        if nz > 1e-9 * math.sqrt(nx * nx + ny * ny + nz * nz)
+           and not hidden(i, v[f[1]], nx, ny, nz, math.sqrt(nx * nx + ny * ny + nz * nz) / 2) then
+          local p, outline = v[f[1]], {}
+          for k, a in ipairs(f) do
+            outline[k] = v[a]
+            if v[a][1] > x0 and v[a][1] < x1 then xs[#xs + 1] = v[a][1] end
+          end
+          local face = { block = b, outline = outline, cx = -nx / nz, cy = -ny / nz,
+                         c0 = p[3] + (nx * p[1] + ny * p[2]) / nz }
+          faces[#faces + 1], b.top[#b.top + 1] = face, face
+          for k = 1, #outline do edge(face, outline[k], outline[k % #outline + 1]) end
+        end
+      end
+    end
+  end
+  local function height(f, x, y) return f.c0 + f.cx * x + f.cy * y end
+  local function y_at(e, x) return e.ay + (e.by - e.ay) * (x - e.ax) / (e.bx - e.ax) end
+
+  -- where edges cross each other or the rectangle's sides y0, y1
+  local nb = math.max(16, #edges // 4)
+  local buckets = {}
+  for k = 1, nb do buckets[k] = {} end
+  local function bucket(x) return math.min(nb, math.max(1, math.floor((x - x0) / (x1 - x0) * nb) + 1)) end
+  for _, e in ipairs(edges) do
+    if e.bx > x0 and e.ax < x1 then
+      for k = bucket(e.ax), bucket(e.bx) do local l = buckets[k]; l[#l + 1] = e end
+      for _, yb in ipairs { y0, y1 } do
+        if (e.ay - yb) * (e.by - yb) < 0 then
+          xs[#xs + 1] = e.ax + (e.bx - e.ax) * (yb - e.ay) / (e.by - e.ay)
+        end
+      end
+    end
+  end
+  for _, l in ipairs(buckets) do
+    for i = 1, #l do
+      local e = l[i]
+      local dx, dy = e.bx - e.ax, e.by - e.ay
+      for j = i + 1, #l do
+        local g = l[j]
+        if g.face ~= e.face and g.ax < e.bx and e.ax < g.bx then
+          local gx, gy = g.bx - g.ax, g.by - g.ay
+          local d = dx * gy - dy * gx
+          if math.abs(d) > 1e-12 * math.sqrt((dx * dx + dy * dy) * (gx * gx + gy * gy)) then
+            local cx, cy = g.ax - e.ax, g.ay - e.ay
+            local s, u = (cx * gy - cy * gx) / d, (cx * dy - cy * dx) / d
+            if s > 0 and s < 1 and u > 0 and u < 1 then xs[#xs + 1] = e.ax + s * dx end
+          end
+        end
+      end
+    end
+  end
+  table.sort(xs)
+  table.sort(edges, function(e, g) return e.ax < g.ax end)
+
+  local share, order, landed = {}, {}, false
+  local lower = { face = false }
+  local active, next_edge = {}, 1
+  for i = 1, #xs - 1 do
+    local a, c = math.max(xs[i], x0), math.min(xs[i + 1], x1)
+    if c - a > tiny then
+      local xm = (a + c) / 2
+      -- the edges over the whole slab, with the rectangle's sides, by y
+      local still = {}
+      for _, e in ipairs(active) do if e.bx > xm then still[#still + 1] = e end end
+      active = still
+      while next_edge <= #edges and edges[next_edge].ax < xm do
+        local e = edges[next_edge]
+        if e.bx > xm then active[#active + 1] = e end
+        next_edge = next_edge + 1
+      end
+      local lines = {}
+      for _, e in ipairs(active) do lines[#lines + 1] = { e = e, y = y_at(e, xm) } end
+      lines[#lines + 1] = { side = true, y = y0, ya = y0, yc = y0 }
+      lines[#lines + 1] = { side = true, y = y1, ya = y1, yc = y1 }
+      table.sort(lines, function(p, r) return p.y < r.y end)
+      -- going up the slab: the faces over each trapezoid, the highest owns it
+      local over, inside = {}, false
+      for k = 1, #lines - 1 do
+        local l = lines[k]
+        if l.side then inside = not inside else over[l.e.face] = not over[l.e.face] or nil end
+        local u = lines[k + 1]
+        if inside and u.y - l.y > tiny then
+          local ym, best, bz = (l.y + u.y) / 2, nil, -math.huge
+          for f in pairs(over) do
+            local z = height(f, xm, ym)
+            if z > bz then best, bz = f, z end
+          end
+          if best then
+            landed = true
+            local b = best.block
+            if not b.support then
+              -- ∫ q, ∫ x q, ∫ y q over the trapezoid (Gauss, 3 x 3 per piece)
+              local F, Fx, Fy = 0, 0, 0
+              local function lo(x) return l.side and l.y or y_at(l.e, x) end
+              local function hi(x) return u.side and u.y or y_at(u.e, x) end
+              for px = 0, pieces - 1 do
+                local pa, pc = a + (c - a) * px / pieces, a + (c - a) * (px + 1) / pieces
+                local hx, mx = (pc - pa) / 2, (pa + pc) / 2
+                for g = 1, 3 do
+                  local x = mx + hx * GX[g]
+                  local ya, yc = lo(x), hi(x)
+                  for py = 0, pieces - 1 do
+                    local qa, qc = ya + (yc - ya) * py / pieces, ya + (yc - ya) * (py + 1) / pieces
+                    local hy, my = (qc - qa) / 2, (qa + qc) / 2
+                    for h = 1, 3 do
+                      local y = my + hy * GX[h]
+                      local w = GW[g] * GW[h] * hx * hy * q_at(q, fail, x, y, height(best, x, y))
+                      F, Fx, Fy = F + w, Fx + w * x, Fy + w * y
+                    end
+                  end
+                end
+              end
+              local e = share[b.id]
+              if not e then
+                e = { b, 0, 0, 0 }
+                share[b.id], order[#order + 1] = e, b.id
+              end
+              e[2], e[3], e[4] = e[2] + F, e[3] + Fx, e[4] + Fy
+              if F > 0 and (not b.cell or F > b.cell.F) then -- the block's largest part: a point on its top
+                local x, y = Fx / F, Fy / F
+                b.cell = { F = F, at = { x, y, height(best, x, y) } }
+              end
+            end
+          end
+        end
+      end
+    end
+  end
+
+  -- Is (x, y) inside the outline of face f in plan?  (Even-odd.)
+  local function under(f, x, y)
+    local inside, ol = false, f.outline
+    for k = 1, #ol do
+      local p, r = ol[k], ol[k % #ol + 1]
+      if (p[2] > y) ~= (r[2] > y) and x < p[1] + (r[1] - p[1]) * (y - p[2]) / (r[2] - p[2]) then
+        inside = not inside
+      end
+    end
+    return inside
+  end
+  local region = ("{{%.6g, %.6g}, {%.6g, %.6g}}"):format(x0, y0, x1, y1)
+  return point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx, Fy)
+    local x, y, z = Fx / F, Fy / F, nil
+    for _, f in ipairs(b.top) do
+      if under(f, x, y) then z = math.max(z or -math.huge, height(f, x, y)) end
+    end
+    if z then return { block = b.id, at = { x, y, z }, force = { 0, 0, -F } } end
+    local c = b.cell.at
+    return { block = b.id, at = c, force = { 0, 0, -F }, moment = { -F * (y - c[2]), F * (x - c[1]), 0 } }
+  end)
+end
+
 -- The point loads {block, at, force} of a distributed load t on model m
 -- (blocks 1..n), each at most `ratio` times its block's weight, checked
 -- whole before the caller applies any (so that applying them cannot
@@ -45,24 +329,12 @@ function M.point_loads(m, n, t, fn, ratio)
       fail(("unknown field '%s' of a distributed load (fields: over, q)"):format(tostring(k)))
     end
   end
-  if m:dim() == 3 then
-    fail("field 'over' (a distributed load) is for 2D models; in 3D give point loads")
-  end
+  if m:dim() == 3 then return point_loads_3d(m, n, t, fail, ratio) end
   local o = t.over
   if type(o) ~= "table" or #o ~= 2 or not finite(o[1]) or not finite(o[2]) or not (o[1] < o[2]) then
     fail("field 'over' must be {x0, x1}, two finite numbers with x0 < x1")
   end
-  local q = t.q
-  if type(q) == "number" then
-    if not finite(q) or q < 0 then
-      fail("field 'q' must be a finite number >= 0 (load per unit length, pressing down), got " .. show(q))
-    end
-    local w = q
-    q = function() return w end
-  elseif type(q) ~= "function" then
-    fail("field 'q' must be a number or a function q(x, y) (load per unit length, pressing down), got "
-         .. type(q))
-  end
+  local q = q_field(t, fail, "length", "x, y")
   local x0, x1 = o[1], o[2]
 
   -- the blocks by the buckets of [x0, x1] they reach over
@@ -95,12 +367,7 @@ function M.point_loads(m, n, t, fn, ratio)
       local h, mid = (pc - pa) / 2, (pa + pc) / 2
       for g = 1, 3 do
         local x = mid + h * GX[g]
-        local ok, v = pcall(q, x, y0 + s * (x - a))
-        if not ok then fail("field 'q': " .. tostring(v)) end
-        if not finite(v) or v < 0 then
-          fail(("field 'q' must give a finite number >= 0, got %s at (%.6g, %.6g)")
-               :format(show(v), x, y0 + s * (x - a)))
-        end
+        local v = q_at(q, fail, x, y0 + s * (x - a))
         F, Fx = F + GW[g] * h * v, Fx + GW[g] * h * v * x
       end
     end
@@ -130,27 +397,11 @@ function M.point_loads(m, n, t, fn, ratio)
       end
     end
   end
-  if not landed then
-    fail(("field 'over' {%.6g, %.6g}: no block lies below it"):format(x0, x1))
-  end
-  table.sort(order)
-  local loads = {}
-  for _, id in ipairs(order) do
-    local b, F, Fx = table.unpack(share[id])
-    if F > 0 then
-      if not (F <= ratio * b.weight and finite(Fx)) then
-        fail(("field 'q' gives block %d a load of %.6g, more than %g times its weight (%.6g): "
-              .. "the solve would not hold it"):format(id, F, ratio, b.weight))
-      end
-      local x = Fx / F
-      loads[#loads + 1] = { block = id, at = { x, (top(b, x)) }, force = { 0, -F } }
-    end
-  end
-  if #loads == 0 then
-    fail(("field 'over' {%.6g, %.6g}: the load lands on supports only (or q is 0 on every free block), "
-          .. "and loads on supports do nothing"):format(x0, x1))
-  end
-  return loads
+  local region = ("{%.6g, %.6g}"):format(x0, x1)
+  return point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx)
+    local x = Fx / F
+    return { block = b.id, at = { x, (top(b, x)) }, force = { 0, -F } }
+  end)
 end
 
 return M

@@ -286,10 +286,20 @@ do
   T.raises(function() facade { length = 4, returns = 1, courses = 3, unit = { 0.4, 0.2 },
                                openings = { { 1, 2, 0 / 0, 2 } } } end,
            "facade{ openings } with a NaN course names it", "entry 1 must be {x0, x1, c0, c1} of numbers", "number 3")
-  -- a distributed load is for 2D models
+  -- a distributed load in 3D: over a rectangle in plan
   box { size = { 1, 1, 1 } }
-  T.raises(function() load { dead = { over = { 0, 1 }, q = 1 } } end, "a distributed load in 3D refused",
-           "load dead: field 'over' (a distributed load) is for 2D models")
+  T.raises(function() load { dead = { over = { 0, 1 }, q = 1 } } end, "a 3D distributed load over {x0, x1} refused",
+           "load dead: field 'over' must be {{x0, y0}, {x1, y1}}")
+  T.raises(function() load { dead = { over = { { 1, 0 }, { 0, 1 } }, q = 1 } } end,
+           "a 3D distributed load over corners in the wrong order refused", "x0 < x1 and y0 < y1")
+  T.raises(function() load { dead = { over = { { 5, 5 }, { 6, 6 } }, q = 1 } } end,
+           "a 3D distributed load over nothing refused", "load dead: field 'over' {{5, 5}, {6, 6}}: no block lies below it")
+  T.raises(function() load { live = "none", dead = { over = { { -1, -1 }, { 1, 1 } },
+                             q = function(x, y, z) return 0.5 - z end } } end,
+           "a 3D distributed load whose q is negative refused, naming the point", "field 'q' must give a finite number >= 0",
+           "at (")
+  T.raises(function() load { dead = { over = { { -1, -1 }, { 1, 1 } }, q = "1" } } end,
+           "a 3D distributed load with q a string refused", "a function q(x, y, z) (load per unit area")
   T.raises(function() load { dead = { block = 1, moment = { 0, 1e13, 0 } } } end, "a 3D couple of 1e13 refused",
            "load dead: field 'moment' on block 1 is 1e+13, more than 1e+12 times the block's weight times its size")
 end

@@ -215,4 +215,100 @@ do
          "a distributed load over two stacked blocks = the point loads worked by hand")
 end
 
+
+-- Distributed loads in 3D (over a rectangle in plan).  A box b x d x h =
+-- 0.5 x 1 x 2 (W = 1) on the ground, q over its top: it rocks about its
+-- leeward edge when alpha W h/2 = W b/2 + Q (its arm), so for q = 2
+-- (Q = q b d = 1, at the middle) alpha = (1 + Q/W) b/h = 0.5, and for
+-- q = k (x - xl) (Q = k d b^2/2 at xl + 2b/3, its arm b/3)
+-- alpha = (W b/2 + Q b/3) / (W h/2).  The ground, a support, takes the
+-- rest of the rectangle.
+do
+  local b, d, h, k = 0.5, 1, 2, 3
+  local function pier()
+    model { dim = 3, mu = 5 }
+    box { size = { 4, 4, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+    box { size = { b, d, h } }
+  end
+  pier()
+  load { dead = { over = { { -2, -2 }, { 2, 2 } }, q = 2 } }
+  T.near(solve { flow = "associative" }.alpha, 0.5, 1e-9, "3D: q = 2 on a box's top: alpha = (1 + Q/W) b/h = 0.5")
+  pier()
+  load { dead = { over = { { -2, -2 }, { 2, 2 } }, q = function(x) return k * math.max(0, x + b / 2) end } }
+  local Q = k * d * b ^ 2 / 2
+  T.near(solve { flow = "associative" }.alpha, (b / 2 + Q * b / 3) / (h / 2), 1e-9,
+         "3D: q = k (x - xl) on a box's top: alpha = (W b/2 + Q b/3) / (W h/2)")
+end
+-- What the model shows from above, in 3D: a box A 1 x 1 x 2 with a box B
+-- 0.5 x 0.5 x 0.5 on a corner of its top, q = 1 over both: B carries 0.25
+-- at its top's middle, A 0.75 on the rest of its top, at (-1/12, -1/12)
+-- (worked by hand).  And an L-shaped block (two arms 3 x 0.2, extruded 1
+-- high) whose top's centroid lies outside it: its arms' loads 0.6 at
+-- (1.5, 0.1) and 0.56 at (0.1, 1.6).  Each gives the alpha of the point
+-- loads by hand, to 1e-12.
+do
+  local function stack()
+    model { dim = 3, mu = 0.5 }
+    box { size = { 4, 4, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+    local A = box { size = { 1, 1, 2 } }
+    local B = box { size = { 0.5, 0.5, 0.5 }, at = { 0.25, 0.25, 2 } }
+    return A, B
+  end
+  stack()
+  load { dead = { over = { { -2, -2 }, { 2, 2 } }, q = 1 } }
+  local spread = solve { flow = "associative" }.alpha
+  local A, B = stack()
+  load { dead = { block = A, at = { -1 / 12, -1 / 12, 2 }, force = { 0, 0, -0.75 } } }
+  load { dead = { block = B, at = { 0.25, 0.25, 2.5 }, force = { 0, 0, -0.25 } } }
+  T.near(spread, solve { flow = "associative" }.alpha, 1e-12,
+         "3D: a distributed load over two stacked boxes = the point loads worked by hand")
+  local function ell()
+    model { dim = 3, mu = 0.6 }
+    box { size = { 5, 5, 0.5 }, at = { 1, 1, -0.5 }, support = true }
+    return extrude { polygon = { { 0, 0 }, { 3, 0 }, { 3, 0.2 }, { 0.2, 0.2 }, { 0.2, 3 }, { 0, 3 } },
+                     from = 0, to = 1 }
+  end
+  ell()
+  load { dead = { over = { { -1, -1 }, { 4, 4 } }, q = 1 } }
+  spread = solve { flow = "associative" }.alpha
+  local L = ell()
+  load { dead = { block = L, at = { 1.5, 0.1, 1 }, force = { 0, 0, -0.6 } } }
+  load { dead = { block = L, at = { 0.1, 1.6, 1 }, force = { 0, 0, -0.56 } } }
+  T.near(spread, solve { flow = "associative" }.alpha, 1e-12,
+         "3D: a distributed load on an L whose top's centroid lies outside it = the arms' point loads")
+end
+-- A dome of 16 segments under q = 1 over a square around it: its
+-- extrados, seen from above, is the 16-gon of radius R + t/2, so the
+-- ground carries its weight and q (k/2) r^2 sin(2 pi / k) more; and a
+-- 3D wall of 6 running-bond courses: its top course alone carries q times
+-- the top's area (every block below hidden), the alpha of those point
+-- loads given by hand.
+do
+  model { dim = 3, mu = 0.6 }
+  local R, t, k = 2, 0.2, 16
+  local v, base = dome { radius = R, thickness = t, rings = 4, segments = k }
+  load { dead = { over = { { -5, -5 }, { 5, 5 } }, q = 1 } }
+  local r = solve { flow = "associative" }
+  local W = 0
+  for _, i in ipairs(v) do W = W + current():block_info(i).weight end
+  local ro = R + t / 2
+  T.near(-r.reactions[base].force[3] - W, k / 2 * ro ^ 2 * math.sin(2 * math.pi / k), 1e-9,
+         "3D: q = 1 over a dome: the ground carries q times the 16-gon of its extrados more")
+  local E, U = { .5, 1, 1, 1, 1, .5 }, { 1, 1, 1, 1, 1 }
+  local function wall3()
+    model { dim = 3, mu = 0.65 }
+    return wall { courses = { E, U, E, U, E, U }, unit = { 0.4, 0.175 }, depth = 0.3 }
+  end
+  wall3()
+  load { dead = { over = { { -1, -1 }, { 3, 1 } }, q = 2 } }
+  local spread = solve { flow = "associative" }.alpha
+  local stones = wall3()
+  for i = #stones - 4, #stones do
+    local c = current():block_info(stones[i]).centroid
+    load { dead = { block = stones[i], at = { c[1], c[2], 6 * 0.175 }, force = { 0, 0, -2 * 0.4 * 0.3 } } }
+  end
+  T.near(spread, solve { flow = "associative" }.alpha, 1e-12,
+         "3D: a distributed load on a wall of 6 courses = q on each top-course block, by hand")
+end
+
 T.done()

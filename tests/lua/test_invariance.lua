@@ -59,4 +59,23 @@ for _, case in ipairs(cases) do
   T.near(r.alpha, a0, 1e-7, name .. ": mirrored with the load reversed")
 end
 end
+
+-- A distributed load on a vault equals the 2D one on its arch: the vault
+-- (3 rings, 3 m long) under q = 1 per unit area over the strip
+-- 0.8 <= x <= 1.2, and the arch 3 m thick under q = 3 per unit length over
+-- [0.8, 1.2], have one alpha (to 1e-8: two LPs of different size).
+do
+  model { mu = 0.6, density = 20, thickness = 3 }
+  arch { n = 12, span = 4, thickness = 0.3 }
+  load { live = "none" }
+  load { live = { over = { 0.8, 1.2 }, q = 3 } }
+  local plane = solve { flow = "associative" }.alpha
+  model { dim = 3, mu = 0.6, density = 20 }
+  arch { n = 12, span = 4, thickness = 0.3, length = 3, segments = 3 }
+  load { live = "none" }
+  load { live = { over = { { 0.8, -1 }, { 1.2, 4 } }, q = 1 } }
+  T.near(solve { flow = "associative" }.alpha, plane, 1e-8,
+         "a strip load on a vault: the alpha of the arch under the same load per unit length")
+end
+
 T.done()
