@@ -301,7 +301,7 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
         double *dst = pl->live ? fL : s->rhs, sg = pl->live ? 1.0 : -1.0;
         dst[r] += sg * f.x;
         dst[r + 1] += sg * f.y;
-        dst[r + 2] += sg * bl_v2_cross(arm, f);
+        dst[r + 2] += sg * (bl_v2_cross(arm, f) + pl->moment / (s->W0 * s->L0));
     }
     s = bl_system_finish(s, nz, fL, err);
     free(fL);

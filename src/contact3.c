@@ -8,8 +8,8 @@
  * a sweep along the longest axis of the model over the bounding boxes
  * sorted by their low end: n log n, plus one box test per pair whose
  * extents along that axis overlap (about 2 N per block in an N x N wall).
- * Interpenetration is judged on convex blocks only (the separating-axis
- * test). */
+ * Interpenetration: the separating-axis test for two convex blocks; else a
+ * point found inside both (overlapping_any). */
 #include "contact3.h"
 
 #include <math.h>
@@ -279,6 +279,35 @@ static int overlapping3(const bl_block *X, const bl_block *Y, double tol)
     return 1;
 }
 
+/* Interpenetration of two blocks either of which is not convex: a point
+ * deeper than tol inside both.  Tried: every vertex of one (on its
+ * surface, inside it next to it); the point 4 tol inside each face from
+ * the middle of each of its edges (where faces of the two lie in one plane,
+ * as the ends of two prisms of one depth, no vertex or edge goes deeper);
+ * and an edge of one through a face of the other (where two surfaces cross,
+ * an edge of one meets a face of the other). */
+static int overlapping_any(const bl_block *X, const bl_block *Y, double tol)
+{
+    for (int pass = 0; pass < 2; pass++) {
+        const bl_polyhedron *A = pass ? &Y->solid : &X->solid, *B = pass ? &X->solid : &Y->solid;
+        for (int i = 0; i < A->nv; i++)
+            if (bl_polyhedron_depth(B, A->v[i]) > tol) return 1;
+        for (int k = 0; k < A->nf; k++) {
+            bl_vec3 n = bl_polyhedron_face_normal(A, k, NULL);
+            for (int i = A->fs[k]; i < A->fs[k + 1]; i++) {
+                int i1 = i + 1 < A->fs[k + 1] ? i + 1 : A->fs[k];
+                bl_vec3 a = A->v[A->fi[i]], b = A->v[A->fi[i1]];
+                if (bl_polyhedron_pierced(B, a, b, tol)) return 1;
+                /* the face turns counter-clockwise seen from outside: n x e points into it */
+                bl_vec3 in = bl_v3_unit(bl_v3_cross(n, bl_v3_sub(b, a)));
+                bl_vec3 p = bl_v3_add(bl_v3_scale(bl_v3_add(a, b), 0.5), bl_v3_scale(bl_v3_sub(in, n), 4.0 * tol));
+                if (bl_polyhedron_depth(A, p) > tol && bl_polyhedron_depth(B, p) > tol) return 1;
+            }
+        }
+    }
+    return 0;
+}
+
 /* Blocks in order of the low end of their boxes along one axis. */
 static int sweep_axis;
 static const bl_block *sweep_blocks;
@@ -339,8 +368,8 @@ int bl_contact_pairs3(bl_model *m, double tol, double gap, bl_contact_problems *
             }
             if (apart) continue;
             int a = i < j ? i : j, b = i < j ? j : i;
-            if (deep && is_convex[a] && is_convex[b] &&
-                overlapping3(&m->blocks[a], &m->blocks[b], tol)) {
+            if (deep && (is_convex[a] && is_convex[b] ? overlapping3(&m->blocks[a], &m->blocks[b], tol)
+                                                      : overlapping_any(&m->blocks[a], &m->blocks[b], tol))) {
                 if (pr->noverlap < 5)
                     snprintf(pr->overlap[pr->noverlap], sizeof pr->overlap[0], "blocks %d and %d",
                              a + 1, b + 1);

@@ -269,16 +269,15 @@ int bl_model_check_point_load(const bl_model *m, const bl_point_load *l, bl_erro
         return bl_error_set(err, "load %s: field 'force' on block %d is %g, more than %g times the block's "
                             "weight (%g): the solve would not hold it", kind, l->block + 1, f, BL_LOAD_RATIO,
                             b->weight);
-    if (m->dim == 3) {
-        const double *x = b->box3;
-        double size = sqrt((x[3] - x[0]) * (x[3] - x[0]) + (x[4] - x[1]) * (x[4] - x[1]) +
-                           (x[5] - x[2]) * (x[5] - x[2]));
-        double c = bl_v3_norm(l->moment3);
-        if (!(c <= BL_LOAD_RATIO * b->weight * size))
-            return bl_error_set(err, "load %s: field 'moment' on block %d is %g, more than %g times the "
-                                "block's weight times its size (%g): the solve would not hold it", kind,
-                                l->block + 1, c, BL_LOAD_RATIO, b->weight * size);
-    }
+    const double *x = m->dim == 3 ? b->box3 : b->box;
+    double size = m->dim == 3 ? sqrt((x[3] - x[0]) * (x[3] - x[0]) + (x[4] - x[1]) * (x[4] - x[1]) +
+                                     (x[5] - x[2]) * (x[5] - x[2]))
+                              : hypot(x[2] - x[0], x[3] - x[1]);
+    double c = m->dim == 3 ? bl_v3_norm(l->moment3) : fabs(l->moment);
+    if (!(c <= BL_LOAD_RATIO * b->weight * size))
+        return bl_error_set(err, "load %s: field 'moment' on block %d is %g, more than %g times the "
+                            "block's weight times its size (%g): the solve would not hold it", kind,
+                            l->block + 1, c, BL_LOAD_RATIO, b->weight * size);
     return 0;
 }
 

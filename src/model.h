@@ -79,6 +79,7 @@ typedef struct bl_joint_spec {
 typedef struct bl_point_load {
     int block;
     bl_vec2 at, force;
+    double moment;       /* 2D: a couple, counter-clockwise */
     int live;
     bl_vec3 at3, force3, moment3; /* 3D: point, force, and a couple */
 } bl_point_load;

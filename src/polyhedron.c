@@ -126,6 +126,18 @@ int bl_polyhedron_on_face(const bl_polyhedron *p, int k, bl_vec3 q, double tol)
     return edge_distance(p, k, q) <= tol || inside_face(p, k, n, q);
 }
 
+int bl_polyhedron_pierced(const bl_polyhedron *p, bl_vec3 a, bl_vec3 b, double tol)
+{
+    for (int k = 0; k < p->nf; k++) {
+        bl_vec3 n = bl_polyhedron_face_normal(p, k, NULL), o = p->v[p->fi[p->fs[k]]];
+        double ha = bl_v3_dot(n, bl_v3_sub(a, o)), hb = bl_v3_dot(n, bl_v3_sub(b, o));
+        if (!((ha > tol && hb < -tol) || (ha < -tol && hb > tol))) continue;
+        bl_vec3 x = bl_v3_add(a, bl_v3_scale(bl_v3_sub(b, a), ha / (ha - hb)));
+        if (inside_face(p, k, n, x) && edge_distance(p, k, x) > tol) return 1;
+    }
+    return 0;
+}
+
 /* Solid angle of the triangle abc seen from the origin, signed by the
  * triangle's orientation (Van Oosterom and Strackee). */
 static double solid_angle(bl_vec3 a, bl_vec3 b, bl_vec3 c)
@@ -145,6 +157,10 @@ double bl_polyhedron_depth(const bl_polyhedron *p, bl_vec3 q)
         double h = bl_v3_dot(n, v0);
         bl_vec3 foot = bl_v3_add(q, bl_v3_scale(n, h));
         d = fmin(d, inside_face(p, k, n, foot) ? fabs(h) : edge_distance(p, k, q));
+        /* q in the face's plane: the face subtends nothing (or q is on it,
+         * and d is 0); its fan's triangles, seen edge on, would give +-2 pi
+         * each by the sign of a round-off */
+        if (fabs(h) <= 1e-10 * bl_v3_norm(v0)) continue;
         for (int i = 1; i + 1 < len; i++)
             omega += solid_angle(v0, bl_v3_sub(p->v[p->fi[a0 + i]], q),
                                  bl_v3_sub(p->v[p->fi[a0 + i + 1]], q));

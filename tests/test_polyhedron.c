@@ -189,6 +189,15 @@ static void depth(void **state)
     assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(0.5, 1.5, 0.5)) - 0.5) < 1e-12);
     assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(1.5, 0.8, 0.5)) - 0.2) < 1e-12);
     assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(1.5, 0.5, -0.25)) + 0.25) < 1e-12);
+    /* in the notch, in the plane of an end face (which they lie outside):
+     * outside, as far from the notch's walls as from the nearer one (the
+     * fan of the end face, seen edge on, read some as inside) */
+    for (int z = 0; z <= 1; z++)
+        for (int i = 1; i < 10; i++)
+            for (int j = 1; j < 10; j++) {
+                double a = 1 + 0.1 * i, b = 1 + 0.1 * j;
+                assert_true(fabs(bl_polyhedron_depth(&p, bl_v3(a, b, z)) + fmin(a, b) - 1) < 1e-12);
+            }
     bl_polyhedron_free(&p);
 }
 

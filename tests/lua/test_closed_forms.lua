@@ -216,6 +216,38 @@ do
 end
 
 
+-- Couples in 2D (load{ dead = { block, moment } }).  The pier b x h =
+-- 0.5 x 1.5 (W = 0.75) rocks about its right toe: a dead couple M
+-- (counter-clockwise) resists, alpha W h/2 = W b/2 + M; a live clockwise
+-- couple -C alone tips it, alpha C = W b/2; and a force with a couple is
+-- the same load as the force moved to the centroid with the couple of the
+-- move (to 1e-12).
+do
+  local b, h = 0.5, 1.5
+  local W = b * h
+  local function pier()
+    model { mu = 5 }
+    local p = block { vertices = { { 0, 0 }, { b, 0 }, { b, h }, { 0, h } } }
+    block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+    return p
+  end
+  local p = pier()
+  load { dead = { block = p, moment = 0.1 } }
+  T.near(solve { flow = "associative" }.alpha, (W * b / 2 + 0.1) / (W * h / 2), 1e-9,
+         "2D couple M against the rocking: alpha = (W b/2 + M) / (W h/2)")
+  p = pier()
+  load { live = "none" }
+  load { live = { block = p, moment = -2 } }
+  T.near(solve { flow = "associative" }.alpha, W * b / 2 / 2, 1e-9, "2D live couple C alone: alpha = W b / (2 C)")
+  p = pier()
+  load { dead = { block = p, at = { 0.1, 1.5 }, force = { 0.3, -1 }, moment = 0.2 } }
+  local a1 = solve { flow = "associative" }.alpha
+  p = pier()
+  -- (0.1, 1.5) - (0.25, 0.75) = (-0.15, 0.75); its cross with (0.3, -1): 0.15 - 0.225
+  load { dead = { block = p, at = { 0.25, 0.75 }, force = { 0.3, -1 }, moment = 0.2 + 0.15 - 0.225 } }
+  T.near(solve { flow = "associative" }.alpha, a1, 1e-12, "2D: a force at a point = the force at the centroid and its couple")
+end
+
 -- Distributed loads in 3D (over a rectangle in plan).  A box b x d x h =
 -- 0.5 x 1 x 2 (W = 1) on the ground, q over its top: it rocks about its
 -- leeward edge when alpha W h/2 = W b/2 + Q (its arm), so for q = 2

@@ -186,7 +186,7 @@ local open = write(".obj", (Ltext:gsub("f 6 1 7 12\n$", "")))
 refused(3, { file = "/nonexistent/x.obj" }, "a file it cannot open", "import: field 'file': cannot open",
         "/nonexistent/x.obj")
 refused(3, { file = write(".obj", "v 0 0 0\nv 1 0\n") }, "a vertex with two numbers", "line 2",
-        "a vertex 'v' needs three finite numbers")
+        "a vertex 'v' needs three finite decimal numbers")
 refused(3, { file = write(".obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n") }, "a face naming vertex 4 of 3",
         "line 4", "face vertex '4' is not one of the 3 vertices")
 refused(3, { file = write(".obj", "v 0 0 0\nv 1 0 0\nf 1 2\n") }, "a face of two vertices", "line 3",
@@ -196,7 +196,8 @@ refused(3, { file = write(".obj", "# nothing\nv 0 0 0\n") }, "a file with no fac
 refused(3, { file = open }, "an object whose surface is open", "line 15 (object 'L')", "open")
 refused(3, { file = L, support = "^base" }, "a support pattern that matches nothing",
         "field 'support' matches no name", "'L'")
-refused(3, { file = L, support = "[" }, "a support that is no Lua pattern", "field 'support' is not a Lua pattern")
+refused(3, { file = L, support = "[" }, "a support that is no Lua pattern and no name",
+        "field 'support' matches no name", "put % before")
 refused(3, { file = L, support = function() error("no") end }, "a support function that fails",
         "field 'support' failed on the name 'L'")
 refused(3, { file = L, scale = 0 }, "scale 0", "field 'scale' must be a positive number")
@@ -211,9 +212,6 @@ refused(2, { file = w1obj, plane = "xz", thickness = "1" }, "a thickness given a
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nA\n70\n1\n10\n0\n20\n0\n42\n0.5\n"
                           .. "10\n1\n20\n0\n10\n1\n20\n1\n0\nENDSEC\n0\nEOF\n") },
         "a polyline with an arc", "line 15", "LWPOLYLINE on layer 'A'", "bulge")
-refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nA\n70\n1\n10\n0\n20\n0\n"
-                          .. "10\n1\n20\n0\n10\n1\n20\n1\n230\n-1\n0\nENDSEC\n0\nEOF\n") },
-        "a polyline drawn from below (extrusion -z)", "line 5", "other than x-y")
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nPOLYLINE\n8\nM\n70\n64\n0\nSEQEND\n0\nENDSEC\n") },
         "a polyface mesh", "line 5", "polyface")
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLINE\n0\nENDSEC\n0\nEOF\n") },
@@ -224,6 +222,138 @@ refused(2, { file = write(".dxf", "AutoCAD Binary DXF\r\n\26\0") }, "a binary DX
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nA\n70\n1\n10\n0\n20\n0\n"
                           .. "10\n1\n20\n0\n10\n2\n20\n0\n0\nENDSEC\n0\nEOF\n") },
         "a polygon of no area", "line 5 (layer 'A')", "zero area")
+local E0 = "0\nSECTION\n2\nENTITIES\n"
+local square = "0\nLWPOLYLINE\n8\nA\n90\n4\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n10\n0\n20\n1\n"
+refused(2, { file = write(".dxf", E0 .. "0\nLWPOLYLINE\n8\nA\n90\n4\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n") },
+        "a DXF cut short inside ENTITIES", "ends inside its ENTITIES section", "cut short")
+refused(2, { file = write(".dxf", E0 .. "0\nLWPOLYLINE\n8\nA\n90\n4\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n"
+                          .. "0\nENDSEC\n0\nEOF\n") },
+        "an LWPOLYLINE with fewer points than its group 90", "3 points where group 90 says 4")
+refused(2, { file = write(".dxf", E0 .. "0\nPOLYLINE\n8\nA\n70\n1\n0\nVERTEX\n8\nA\n10\n0\n20\n0\n0\nLINE\n8\nA\n"
+                          .. "0\nENDSEC\n0\nEOF\n") }, "a POLYLINE without SEQEND", "line 5", "has no SEQEND")
+refused(2, { file = write(".dxf", E0 .. "0\nVERTEX\n8\nA\n10\n0\n20\n0\n0\nENDSEC\n0\nEOF\n") },
+        "a VERTEX outside a POLYLINE", "line 5", "VERTEX outside a POLYLINE")
+refused(2, { file = write(".dxf", E0 .. "0\nPOLYLINE\n8\nA\n70\n5\n0\nSEQEND\n0\nENDSEC\n0\nEOF\n") },
+        "a spline-fit POLYLINE", "line 5", "spline-fit")
+refused(2, { file = write(".dxf", E0 .. square:gsub("70\n1\n", "70\n1.5\n") .. "0\nENDSEC\n0\nEOF\n") },
+        "a polyline whose flags are 1.5", "line 11", "group 70 (flags) must be an integer")
+refused(2, { file = write(".dxf", E0 .. square:gsub("20\n1\n10\n0\n20\n1\n", "10\n0\n20\n1\n") .. "0\nENDSEC\n0\nEOF\n") },
+        "a point without its y", "without its y")
+refused(2, { file = write(".dxf", E0 .. square:gsub("10\n1\n20\n0\n", "10\n0x10\n20\n0\n") .. "0\nENDSEC\n0\nEOF\n") },
+        "a hexadecimal coordinate", "group 10 must be a finite decimal number, got '0x10'")
+refused(2, { file = write(".dxf", E0 .. square:gsub("70\n1\n", "70\n1\n210\n1\n220\n0\n230\n0\n")
+                          .. "0\nENDSEC\n0\nEOF\n") }, "a polyline drawn in the y-z plane", "other than the world's x-y")
+refused(2, { file = w1dxf, plane = "xz" }, "a plane for a DXF", "field 'plane' is for OBJ files")
+refused(2, { file = os.getenv("TMPDIR") or "/tmp", format = "obj" }, "a directory", "field 'file': cannot read")
+refused(3, { file = write(".obj", "o box\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                          .. "f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n") },
+        "a box without its top (not closed, though its points make a convex hull)", "(object 'box')", "open")
+
+-- 5. Files as programs write them (an exploratory test's findings).
+-- A box 0.8 x 0.3 x 0.3 turned about z and x, written with 6 decimals (as
+-- Blender does): its faces bent by the rounding, it is still the convex
+-- block, volume 0.072 to the rounding (1e-5 relative).
+local function turned(p)
+  local cz, sz, cx, sx = math.cos(0.3), math.sin(0.3), math.cos(0.1), math.sin(0.1)
+  local x, y, z = p[1] * cz - p[2] * sz, p[1] * sz + p[2] * cz, p[3]
+  return { x, y * cx - z * sx, y * sx + z * cx }
+end
+local function six(name, pts, faces)
+  local out = { "o " .. name }
+  for _, p in ipairs(pts) do out[#out + 1] = ("v %.6f %.6f %.6f"):format(table.unpack(turned(p))) end
+  for _, f in ipairs(faces) do out[#out + 1] = "f " .. table.concat(f, " ") end
+  return table.concat(out, "\n") .. "\n"
+end
+local cube = { { 1, 4, 3, 2 }, { 5, 6, 7, 8 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 4, 8, 7 }, { 4, 1, 5, 8 } }
+model { dim = 3 }
+local rb = import { file = write(".obj", six("stone", { { 0, 0, 0 }, { 0.8, 0, 0 }, { 0.8, 0.3, 0 }, { 0, 0.3, 0 },
+  { 0, 0, 0.3 }, { 0.8, 0, 0.3 }, { 0.8, 0.3, 0.3 }, { 0, 0.3, 0.3 } }, cube)) }
+T.near(current():block_info(rb[1]).volume, 0.072, 1e-5, "OBJ at 6 decimals: a turned box is its convex hull")
+T.near(rb.resolution, 1e-6, 1e-12, "OBJ at 6 decimals: .resolution 1e-6")
+-- the L of part 2 turned the same way: not convex, its bent faces cut
+-- into triangles; volume 3 to the rounding
+local lv, lf = {}, {}
+for x, y, z in Ltext:gmatch("v (%S+) (%S+) (%S+)") do lv[#lv + 1] = { tonumber(x), tonumber(y), tonumber(z) } end
+for face in Ltext:gmatch("f ([^\n]+)") do
+  local ids = {}
+  for k in face:gmatch("%d+") do ids[#ids + 1] = tonumber(k) end
+  lf[#lf + 1] = ids
+end
+model { dim = 3 }
+local lt = import { file = write(".obj", six("L", lv, lf)) }
+T.near(current():block_info(lt[1]).volume, 3, 1e-5, "OBJ at 6 decimals: a turned L, its bent faces cut into triangles")
+-- material groups (g) inside one object (o): one block
+model { dim = 3 }
+local mg = import { file = write(".obj", [[
+o Cube
+v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 0 0 1
+v 1 0 1
+v 1 1 1
+v 0 1 1
+g Cube_Red
+f 1 4 3 2
+f 1 2 6 5
+f 4 1 5 8
+g Cube_Blue
+f 5 6 7 8
+f 2 3 7 6
+f 3 4 8 7
+o Empty
+]]) }
+T.ok(#mg == 1 and math.abs(current():block_info(mg[1]).volume - 1) < 1e-12, "OBJ: groups inside an object are one block",
+     ("%d blocks"):format(#mg))
+T.ok(#mg.skipped == 1 and mg.skipped[1]:find("object 'Empty' has no faces", 1, true), "OBJ: an object without faces listed",
+     tostring(mg.skipped))
+-- a byte-order mark, CR line ends, a comment after a name, a comment ending in a backslash
+model { dim = 3 }
+local bom = import { file = write(".obj", "\239\187\191o ground # the base\r# a comment \\\rv 0 0 0\rv 1 0 0\rv 0 1 0\rv 0 0 1\r"
+                                    .. "f 1 2 3\rf 1 2 4\rf 2 3 4\rf 1 3 4\r"), support = "ground" }
+T.ok(#bom == 1 and bom.names[1] == "ground" and stats().supports == 1,
+     "OBJ: a byte-order mark, CR line ends and comments read as nothing", table.concat(bom.names, ","))
+-- a layer name with pattern characters, given as it is
+model {}
+local dash = import { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nA-WALL\n70\n1\n10\n0\n20\n0\n"
+                                   .. "10\n1\n20\n0\n10\n1\n20\n1\n0\nENDSEC\n0\nEOF\n"), support = "A-WALL", format = "DXF" }
+T.eq(stats().supports, 1, "DXF: 'support' given as the name itself (A-WALL), and format \"DXF\"")
+T.eq(tostring(dash.skipped), "nothing left out", "DXF: .skipped prints as a sentence")
+-- DXF entities as CAD programs write them: a closed polyline that repeats
+-- its first point, a paper-space frame, a mirrored polyline, a POLYLINE at
+-- an elevation beside an LWPOLYLINE at the same one, a Windows-1252 layer
+-- name in an AutoCAD 2000 file
+local function dxf(header, entities)
+  return "0\nSECTION\n2\nHEADER\n" .. header .. "0\nENDSEC\n0\nSECTION\n2\nENTITIES\n" .. entities
+         .. "0\nENDSEC\n0\nEOF\n"
+end
+local function lw(layer, pts, extra)
+  local out = { "0\nLWPOLYLINE\n8\n" .. layer .. "\n" .. (extra or "") .. "90\n" .. #pts .. "\n70\n1\n" }
+  for _, p in ipairs(pts) do out[#out + 1] = ("10\n%g\n20\n%g\n"):format(p[1], p[2]) end
+  return table.concat(out)
+end
+local sq = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } }
+model {}
+local cad = import { file = write(".dxf", dxf("9\n$ACADVER\n1\nAC1015\n9\n$DWGCODEPAGE\n3\nANSI_1252\n",
+  lw("Stein_\228", { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0, 0 } })
+  .. lw("frame", { { -5, -5 }, { 5, -5 }, { 5, 5 } }, "67\n1\n")
+  .. lw("m", { { 1, 0 }, { 2, 0 }, { 2, 1 } }, "210\n0\n220\n0\n230\n-1\n")
+  .. "0\nPOLYLINE\n8\nQ\n66\n1\n10\n0\n20\n0\n30\n0\n70\n1\n0\nVERTEX\n8\nQ\n10\n0\n20\n1\n30\n0\n"
+  .. "0\nVERTEX\n8\nQ\n10\n1\n20\n1\n30\n0\n0\nVERTEX\n8\nQ\n10\n1\n20\n2\n30\n0\n0\nSEQEND\n")),
+  support = "Stein_ä" }
+T.eq(cad.names[1], "Stein_ä", "DXF 2000: a Windows-1252 layer name read as UTF-8")
+T.ok(current():block_info(cad[1]).support and not current():block_info(cad[3]).support,
+     "DXF: 'support' matches the decoded name")
+T.near(current():block_info(cad[1]).area, 1, 1e-12, "DXF: a closed polyline repeating its first point is the square")
+T.ok(#cad == 3 and tostring(cad.skipped):find("frame' in paper space", 1, true), "DXF: the paper-space frame left out",
+     tostring(cad.skipped))
+T.near(current():block_info(cad[2]).centroid[1], -5 / 3, 1e-12, "DXF: a polyline drawn from below is mirrored (x -> -x)")
+model {}
+local lev = import { file = write(".dxf", dxf("", lw("a", sq, "38\n100\n")
+  .. "0\nPOLYLINE\n8\nb\n66\n1\n10\n0\n20\n0\n30\n100\n70\n1\n0\nVERTEX\n8\nb\n10\n0\n20\n1\n0\nVERTEX\n8\nb\n10\n1\n20\n1\n"
+  .. "0\nVERTEX\n8\nb\n10\n1\n20\n2\n0\nSEQEND\n")) }
+T.eq(#lev, 2, "DXF: an LWPOLYLINE and a POLYLINE at one elevation (38 and the POLYLINE's 30) lie in one plane")
 
 for _, f in ipairs(files) do os.remove(f) end
 T.done()

@@ -187,6 +187,27 @@ model { dim = 3 }
 box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
 box { size = { 1, 1, 1 }, at = { 0, 0, 2 } }
 T.raises(function() contacts {} end, "a floating box", "no interface on free block 2")
+-- Blocks that are not convex (an L-shaped prism 1 deep, its notch
+-- x 1..2, z 1..2): a box in the notch touches it, and each of three
+-- overlaps is named (they read as no interface, or passed).
+local function notch(third)
+  model { dim = 3 }
+  box { size = { 6, 6, 1 }, at = { 1, 0, -1 }, support = true }
+  extrude { polygon = { { 0, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } }, axis = "y", from = 0, to = 1 }
+  third()
+end
+notch(function() box { size = { 1, 1, 1 }, at = { 1.5, 0.5, 1 } } end)
+T.eq(contacts {}, 3, "a box in an L's notch: it touches the L on two faces, which stands on the base")
+for _, case in ipairs {
+  { "a second L of the same depth moved 0.5 along the first (their ends in one plane)", function()
+      extrude { polygon = { { 0.5, 0 }, { 2.5, 0 }, { 2.5, 1 }, { 1.5, 1 }, { 1.5, 2 }, { 0.5, 2 } }, axis = "y",
+                from = 0, to = 1 } end },
+  { "a box 0.1 into the notch's corner", function() box { size = { 1, 1, 1 }, at = { 1.4, 0.5, 0.9 } } end },
+  { "a thin bar through the L's upright, its ends outside", function()
+      box { size = { 0.1, 3, 0.1 }, at = { 0.5, 0.5, 1.5 } } end } } do
+  notch(case[2])
+  T.raises(function() contacts {} end, "not convex: " .. case[1], "overlapping blocks 2 and 3")
+end
 
 
 -- The associative LP in 3D (vertex model, friction pyramids).
