@@ -1,19 +1,21 @@
 -- masonry.lua - 3D assemblages of masonry units (boxes of solid.lua) on a
 -- fixed base slab, for models with dim = 3.
 --
--- facade{ length = n, returns = m, courses = c, unit = {L, H}, openings,
---   density }: a facade of n blocks L long along x, half a block (L/2)
---   thick along y, with return walls at both ends running m blocks along
---   +y, interlocked in alternate courses (the facade runs through the
---   corners in the first, the returns in the next), c courses H high, on a
---   fixed base slab; openings in the facade as in bond{}, between the
---   returns.  Returns the block numbers and the base.
--- corner{ lengths = {n1, n2}, courses = c, unit = {L, H}, density }: two
---   panels half a block (L/2) thick meeting at a corner at the origin, one
---   n1 blocks long along +x, the other n2 blocks along +y, interlocked in
---   alternate courses (the x panel runs through the corner in the first,
---   the y panel in the next, with half-block closers), c courses H high,
---   on a fixed base slab.  Returns the block numbers and the base.
+-- facade{ length = n, returns = m, courses = c, unit = {L, H}, thickness = t,
+--   openings, density }: a facade of n blocks L long along x, t thick
+--   (default L/2, less than L) along y, with return walls as thick at
+--   both ends running m blocks along +y, interlocked in alternate courses
+--   (the facade runs through the corners in the first, the returns in the
+--   next, the facade's joints half a block from the first's), c courses H
+--   high, on a fixed base slab; openings in the facade as in bond{},
+--   between the returns.  Returns the block numbers and the base.
+-- corner{ lengths = {n1, n2}, courses = c, unit = {L, H}, thickness = t,
+--   density }: two panels t thick (default L/2, less than L) meeting at a
+--   corner at the origin, one n1 blocks long along +x, the other n2
+--   blocks along +y, interlocked in alternate courses (the x panel runs
+--   through the corner in the first, the y panel in the next, with
+--   closers), c courses H high, on a fixed base slab.  Returns the block
+--   numbers and the base.
 -- pier{ size = {a, b}, courses = c, height = H, density }: a pier a wide
 --   (x) and b deep (y) of c courses H high, two blocks to a course, split
 --   across x in one course and across y in the next, on a fixed base slab.
@@ -93,25 +95,40 @@ return function(M, fields)
     return pieces
   end
 
+  -- field 'thickness' of a panel of units L long: less than `most` L
+  local function thickness(fn, t, L, most)
+    local th = t.thickness
+    if th == nil then return L / 2 end
+    if type(th) ~= "number" or not (th > 0) or not (th < most * L) then
+      fail(fn, ("field 'thickness' must be a number greater than 0 and less than %g L (%.6g), got %s")
+        :format(most, most * L, report.show(th)))
+    end
+    return th
+  end
+
   function M.facade(t)
     check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true,
-                         openings = true })
+                         openings = true, thickness = true })
     local n, m = positive_integer("facade", t, "length"), positive_integer("facade", t, "returns")
     local courses = positive_integer("facade", t, "courses")
     if n < 2 then fail("facade", "field 'length' must be at least 2 blocks") end
-    -- between the return walls' inner faces
-    local openings = openings_field("facade", t, 0.5, n - 0.5, courses)
     local u = number_list("facade", t, "unit", 2, true)
-    local L, H, th = u[1], u[2], u[1] / 2
+    local L, H = u[1], u[2]
+    local th = thickness("facade", t, L, 1)
+    -- between the return walls' inner faces
+    local openings = openings_field("facade", t, th / L, n - th / L, courses)
     local W, D = n * L, th + m * L
     local blocks, rho = {}, t.density
     local function put(size, at) blocks[#blocks + 1] = M.box { size = size, at = at, density = rho } end
     for c = 0, courses - 1 do
       local z = c * H
       -- the facade's blocks, from pieces {x0, x1} in units of L
-      local function front(x0, count)
+      local function front(x0, count, inner)
         local pieces = {}
         for k = 0, count - 1 do pieces[#pieces + 1] = { x0 + k, x0 + k + 1 } end
+        if inner then -- from the returns' inner faces
+          pieces[1][1], pieces[#pieces][2] = inner, n - inner
+        end
         for _, p in ipairs(cut(pieces, openings, c + 1)) do
           put({ (p[2] - p[1]) * L, th, H }, { (p[1] + p[2]) / 2 * L, th / 2, z })
         end
@@ -121,12 +138,12 @@ return function(M, fields)
         for _, x in ipairs { th / 2, W - th / 2 } do
           for k = 0, m - 1 do put({ th, L, H }, { x, th + (k + 0.5) * L, z }) end
         end
-      else -- the returns run through the corners
+      else -- the returns run through the corners; the facade's joints at (k + 1/2) L
         for _, x in ipairs { th / 2, W - th / 2 } do
           for k = 0, m - 1 do put({ th, L, H }, { x, (k + 0.5) * L, z }) end
           put({ th, th, H }, { x, m * L + th / 2, z })
         end
-        front(0.5, n - 1)
+        front(0.5, n - 1, th / L)
       end
     end
     local base = M.box { size = { W + 2 * th, D + 2 * th, H }, at = { W / 2, D / 2, -H }, support = true }
@@ -134,7 +151,7 @@ return function(M, fields)
   end
 
   function M.corner(t)
-    check("corner", t, { lengths = true, courses = true, unit = true, density = true })
+    check("corner", t, { lengths = true, courses = true, unit = true, density = true, thickness = true })
     local n = number_list("corner", t, "lengths", 2, true)
     for i = 1, 2 do
       local v = math.tointeger(n[i])
@@ -146,7 +163,8 @@ return function(M, fields)
     end
     local courses = positive_integer("corner", t, "courses")
     local u = number_list("corner", t, "unit", 2, true)
-    local L, H, th = u[1], u[2], u[1] / 2
+    local L, H = u[1], u[2]
+    local th = thickness("corner", t, L, 1)
     local blocks, rho = {}, t.density
     local function put(size, at) blocks[#blocks + 1] = M.box { size = size, at = at, density = rho } end
     for c = 0, courses - 1 do
@@ -158,7 +176,7 @@ return function(M, fields)
         for k = 0, n[2] - 1 do put({ th, L, H }, { th / 2, (k + 0.5) * L, z }) end
         put({ th, th, H }, { th / 2, n[2] * L + th / 2, z })
         for k = 0, n[1] - 2 do put({ L, th, H }, { th + (k + 0.5) * L, th / 2, z }) end
-        put({ th, th, H }, { n[1] * L - th / 2, th / 2, z })
+        put({ L - th, th, H }, { n[1] * L - (L - th) / 2, th / 2, z })
       end
     end
     local X, Y = n[1] * L, n[2] * L + th

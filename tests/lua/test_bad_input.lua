@@ -294,6 +294,13 @@ do
   T.raises(function() facade { length = 4, returns = 1, courses = 3, unit = { 0.4, 0.2 },
                                openings = { { 1, 2, 0 / 0, 2 } } } end,
            "facade{ openings } with a NaN course names it", "entry 1 must be {x0, x1, c0, c1} of numbers", "number 3")
+  -- thicknesses of facade{} and corner{}
+  T.raises(function() facade { length = 4, returns = 1, courses = 2, unit = { 0.4, 0.2 }, thickness = 0.4 } end,
+           "facade{ thickness = L } refused", "facade: field 'thickness' must be a number greater than 0 and less than 1 L")
+  T.raises(function() facade { length = 2, returns = 1, courses = 2, unit = { 0.4, 0.2 }, thickness = 0 } end,
+           "facade{ thickness = 0 } refused", "facade: field 'thickness'")
+  T.raises(function() corner { lengths = { 2, 2 }, courses = 2, unit = { 0.4, 0.2 }, thickness = "0.1" } end,
+           "corner{ thickness = \"0.1\" } refused", "corner: field 'thickness'", "got \"0.1\"")
   -- a distributed load in 3D: over a rectangle in plan
   box { size = { 1, 1, 1 } }
   T.raises(function() load { dead = { over = { 0, 1 }, q = 1 } } end, "a 3D distributed load over {x0, x1} refused",

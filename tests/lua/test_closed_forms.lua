@@ -248,6 +248,32 @@ do
   T.near(solve { flow = "associative" }.alpha, a1, 1e-12, "2D: a force at a point = the force at the centroid and its couple")
 end
 
+-- facade{} and corner{} of a given thickness t: their volume, course by
+-- course t H (n + 2 m) L and t H (n1 + n2) L, to 1e-12; and one course H
+-- high pushed out of plane away from the return walls: the panel rocks
+-- about its outer edge at alpha = t/H (joints that slide without opening:
+-- associative ones would make the returns' faces push back, dilating).
+for _, th in ipairs { 0.15, 0.3 } do
+  local L, H = 0.4, 1
+  model { dim = 3, mu = 0.65 }
+  local f = facade { length = 5, returns = 2, courses = 2, unit = { L, H }, thickness = th }
+  local v = 0
+  for _, b in ipairs(f) do v = v + current():block_info(b).volume end
+  T.near(v, 2 * th * H * (5 + 2 * 2) * L, 1e-12, ("facade{ thickness = %g }: volume 2 t H (n + 2m) L"):format(th))
+  model { dim = 3, mu = 0.65 }
+  local c = corner { lengths = { 4, 3 }, courses = 2, unit = { L, H }, thickness = th }
+  v = 0
+  for _, b in ipairs(c) do v = v + current():block_info(b).volume end
+  T.near(v, 2 * th * H * (4 + 3) * L, 1e-12, ("corner{ thickness = %g }: volume 2 t H (n1 + n2) L"):format(th))
+  for _, make in ipairs { function() facade { length = 5, returns = 2, courses = 1, unit = { L, H }, thickness = th } end,
+                          function() corner { lengths = { 4, 3 }, courses = 1, unit = { L, H }, thickness = th } end } do
+    model { dim = 3, mu = 0.65 }
+    make()
+    load { live = "horizontal", direction = { 0, -1 } }
+    T.near(solve {}.alpha, th / H, 1e-9, ("one course %g thick pushed off its returns: alpha = t/H"):format(th))
+  end
+end
+
 -- Distributed loads in 3D (over a rectangle in plan).  A box b x d x h =
 -- 0.5 x 1 x 2 (W = 1) on the ground, q over its top: it rocks about its
 -- leeward edge when alpha W h/2 = W b/2 + Q (its arm), so for q = 2
