@@ -111,12 +111,28 @@ local function point_loads_3d(m, n, t, fail, ratio)
   end
   local q = q_field(t, fail, "area", "x, y, z")
   local pieces = type(t.q) == "number" and 1 or 2
-  local x0, y0, x1, y1 = o[1][1], o[1][2], o[2][1], o[2][2]
-  local tiny = 1e-12 * math.max(x1 - x0, y1 - y0)
+  local region = ("{{%.6g, %.6g}, {%.6g, %.6g}}"):format(o[1][1], o[1][2], o[2][1], o[2][2])
+  -- the blocks, and the rectangle cut to the model's extent in plan
+  local infos, X0, Y0, X1, Y1 = {}, math.huge, math.huge, -math.huge, -math.huge
+  for i = 1, n do
+    local b = m:block_info(i)
+    b.lx, b.ly, b.hx, b.hy = math.huge, math.huge, -math.huge, -math.huge
+    for _, p in ipairs(b.vertices) do
+      b.lx, b.ly, b.hx, b.hy = math.min(b.lx, p[1]), math.min(b.ly, p[2]), math.max(b.hx, p[1]), math.max(b.hy, p[2])
+    end
+    X0, Y0, X1, Y1 = math.min(X0, b.lx), math.min(Y0, b.ly), math.max(X1, b.hx), math.max(Y1, b.hy)
+    infos[i] = b
+  end
+  local tiny = 1e-12 * math.max(X1 - X0, Y1 - Y0)
+  local x0, y0, x1, y1 = math.max(o[1][1], X0), math.max(o[1][2], Y0), math.min(o[2][1], X1), math.min(o[2][2], Y1)
+  if not (x1 - x0 > tiny and y1 - y0 > tiny) then
+    fail(("field 'over' %s: no block lies below it"):format(region))
+  end
 
   -- The faces on which other blocks sit over their whole area are hidden:
   -- per block, the interfaces on its faces that look up (outward normal,
-  -- a point, area), from the model's contacts as stats() finds them.
+  -- centroid, area), from the model's contacts as stats() finds them; each
+  -- interface lies within one face of each of its blocks.
   local seated = {}
   local ok, st = pcall(m.stats, m)
   for k = 1, ok and st.interfaces or 0 do
@@ -124,22 +140,38 @@ local function point_loads_3d(m, n, t, fail, ratio)
     local nz = j.normal[3]
     if nz ~= 0 then
       local b, sign = nz > 0 and j.a or j.b, nz > 0 and 1 or -1
+      local c = { 0, 0, 0 }
+      for _, p in ipairs(j.points) do
+        for d = 1, 3 do c[d] = c[d] + p[d] / #j.points end
+      end
       seated[b] = seated[b] or {}
-      table.insert(seated[b], { normal = { sign * j.normal[1], sign * j.normal[2], sign * nz },
-                                at = j.points[1], area = j.area })
+      table.insert(seated[b], { normal = { sign * j.normal[1], sign * j.normal[2], sign * nz }, at = c,
+                                area = j.area })
     end
   end
   local plane_tol = math.max(ok and st.tol or 0, tiny)
-  local function hidden(i, p, nx, ny, nz, area)
-    local len, sum = math.sqrt(nx * nx + ny * ny + nz * nz), 0
+  -- Is face f (points v) with normal (nx, ny, nz) covered by its interfaces?
+  local function hidden(i, v, f, nx, ny, nz)
+    local len, sum, p = math.sqrt(nx * nx + ny * ny + nz * nz), 0, v[f[1]]
+    -- inside the face: in the plane across the normal's largest component
+    local u, w = 1, 2
+    if math.abs(nx) >= math.abs(ny) and math.abs(nx) >= math.abs(nz) then u, w = 2, 3
+    elseif math.abs(ny) >= math.abs(nz) then u, w = 1, 3 end
     for _, s in ipairs(seated[i] or {}) do
-      local u, r = s.normal, s.at
-      if (u[1] * nx + u[2] * ny + u[3] * nz) / len > 1 - 1e-9
+      local r = s.at
+      if (s.normal[1] * nx + s.normal[2] * ny + s.normal[3] * nz) / len > 1 - 1e-9
          and math.abs(((r[1] - p[1]) * nx + (r[2] - p[2]) * ny + (r[3] - p[3]) * nz) / len) <= plane_tol then
-        sum = sum + s.area
+        local inside = false
+        for k = 1, #f do
+          local a, b = v[f[k]], v[f[k % #f + 1]]
+          if (a[w] > r[w]) ~= (b[w] > r[w]) and r[u] < a[u] + (b[u] - a[u]) * (r[w] - a[w]) / (b[w] - a[w]) then
+            inside = not inside
+          end
+        end
+        if inside then sum = sum + s.area end
       end
     end
-    return sum >= area * (1 - 1e-9)
+    return sum >= len / 2 * (1 - 1e-9)
   end
 
   -- the faces that look up and are not hidden: outline in plan, plane
@@ -151,13 +183,9 @@ local function point_loads_3d(m, n, t, fail, ratio)
     if r[1] - p[1] > tiny then edges[#edges + 1] = { face = face, ax = p[1], ay = p[2], bx = r[1], by = r[2] } end
   end
   for i = 1, n do
-    local b = m:block_info(i)
+    local b = infos[i]
     local v = b.vertices
-    local lx, ly, hx, hy = math.huge, math.huge, -math.huge, -math.huge
-    for _, p in ipairs(v) do
-      lx, ly, hx, hy = math.min(lx, p[1]), math.min(ly, p[2]), math.max(hx, p[1]), math.max(hy, p[2])
-    end
-    if hx > x0 and lx < x1 and hy > y0 and ly < y1 then
+    if b.hx > x0 and b.lx < x1 and b.hy > y0 and b.ly < y1 then
       b.id, b.top = i, {}
       for _, f in ipairs(b.faces) do
         local nx, ny, nz = 0, 0, 0 -- Newell's normal, outward
@@ -166,8 +194,7 @@ local function point_loads_3d(m, n, t, fail, ratio)
           nx, ny, nz = nx + (p[2] - r[2]) * (p[3] + r[3]), ny + (p[3] - r[3]) * (p[1] + r[1]),
                        nz + (p[1] - r[1]) * (p[2] + r[2])
         end
-        if nz > 1e-9 * math.sqrt(nx * nx + ny * ny + nz * nz)
-           and not hidden(i, v[f[1]], nx, ny, nz, math.sqrt(nx * nx + ny * ny + nz * nz) / 2) then
+        if nz > 1e-9 * math.sqrt(nx * nx + ny * ny + nz * nz) and not hidden(i, v, f, nx, ny, nz) then
           local p, outline = v[f[1]], {}
           for k, a in ipairs(f) do
             outline[k] = v[a]
@@ -184,14 +211,18 @@ local function point_loads_3d(m, n, t, fail, ratio)
   local function height(f, x, y) return f.c0 + f.cx * x + f.cy * y end
   local function y_at(e, x) return e.ay + (e.by - e.ay) * (x - e.ax) / (e.bx - e.ax) end
 
-  -- where edges cross each other or the rectangle's sides y0, y1
-  local nb = math.max(16, #edges // 4)
+  -- where edges cross each other or the rectangle's sides y0, y1: the
+  -- pairs of edges that share a cell of a grid over the rectangle
+  local nb = math.max(4, math.ceil(math.sqrt(#edges)))
   local buckets = {}
-  for k = 1, nb do buckets[k] = {} end
-  local function bucket(x) return math.min(nb, math.max(1, math.floor((x - x0) / (x1 - x0) * nb) + 1)) end
+  for k = 1, nb * nb do buckets[k] = {} end
+  local function cell(x, lo, hi) return math.min(nb, math.max(1, math.floor((x - lo) / (hi - lo) * nb) + 1)) end
   for _, e in ipairs(edges) do
     if e.bx > x0 and e.ax < x1 then
-      for k = bucket(e.ax), bucket(e.bx) do local l = buckets[k]; l[#l + 1] = e end
+      local ja, jb = cell(math.min(e.ay, e.by), y0, y1), cell(math.max(e.ay, e.by), y0, y1)
+      for ix = cell(e.ax, x0, x1), cell(e.bx, x0, x1) do
+        for iy = ja, jb do local l = buckets[(iy - 1) * nb + ix]; l[#l + 1] = e end
+      end
       for _, yb in ipairs { y0, y1 } do
         if (e.ay - yb) * (e.by - yb) < 0 then
           xs[#xs + 1] = e.ax + (e.bx - e.ax) * (yb - e.ay) / (e.by - e.ay)
@@ -221,7 +252,6 @@ local function point_loads_3d(m, n, t, fail, ratio)
   table.sort(edges, function(e, g) return e.ax < g.ax end)
 
   local share, order, landed = {}, {}, false
-  local lower = { face = false }
   local active, next_edge = {}, 1
   for i = 1, #xs - 1 do
     local a, c = math.max(xs[i], x0), math.min(xs[i + 1], x1)
@@ -306,7 +336,6 @@ local function point_loads_3d(m, n, t, fail, ratio)
     end
     return inside
   end
-  local region = ("{{%.6g, %.6g}, {%.6g, %.6g}}"):format(x0, y0, x1, y1)
   return point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx, Fy)
     local x, y, z = Fx / F, Fy / F, nil
     for _, f in ipairs(b.top) do

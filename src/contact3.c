@@ -279,15 +279,50 @@ static int overlapping3(const bl_block *X, const bl_block *Y, double tol)
     return 1;
 }
 
-/* Interpenetration of two blocks either of which is not convex: a point
- * deeper than tol inside both.  Tried: every vertex of one (on its
- * surface, inside it next to it); the point 4 tol inside each face from
- * the middle of each of its edges (where faces of the two lie in one plane,
- * as the ends of two prisms of one depth, no vertex or edge goes deeper);
- * and an edge of one through a face of the other (where two surfaces cross,
- * an edge of one meets a face of the other). */
+/* Whether a face of A and a face of B lie in one plane (within tol), look
+ * the same way and overlap over an area (more than tol times the piece's
+ * size): the blocks then overlap next to it, on the same side of it. */
+static int same_way_faces_overlap(const bl_polyhedron *A, const bl_polyhedron *B, double tol)
+{
+    enum { MAXV = 256 };
+    bl_vec2 qa[MAXV], qb[MAXV], out[2 * MAXV], tmp[2 * MAXV], sa[MAXV], sb[MAXV];
+    int ia_idx[3 * MAXV], ia_len[MAXV], ib_idx[3 * MAXV], ib_len[MAXV];
+    for (int fa = 0; fa < A->nf; fa++) {
+        plane f = face_plane(A, fa);
+        int na = A->fs[fa + 1] - A->fs[fa];
+        if (na > MAXV) continue;
+        for (int fb = 0; fb < B->nf; fb++) {
+            int b0 = B->fs[fb], nb = B->fs[fb + 1] - b0;
+            if (nb > MAXV) continue;
+            if (bl_v3_norm(bl_v3_sub(bl_polyhedron_face_normal(B, fb, NULL), f.n)) > 1e-6) continue;
+            if (fabs(bl_v3_dot(f.n, bl_v3_sub(B->v[B->fi[b0]], f.o))) > tol) continue;
+            for (int i = 0; i < na; i++) qa[i] = to2(&f, A->v[A->fi[A->fs[fa] + i]]);
+            for (int i = 0; i < nb; i++) qb[i] = to2(&f, B->v[B->fi[b0 + i]]);
+            int pa = convex_pieces(qa, na, ia_idx, ia_len), pb = convex_pieces(qb, nb, ib_idx, ib_len);
+            for (int x = 0, ox = 0; x < pa; ox += ia_len[x], x++) {
+                for (int i = 0; i < ia_len[x]; i++) sa[i] = qa[ia_idx[ox + i]];
+                for (int y = 0, oy = 0; y < pb; oy += ib_len[y], y++) {
+                    for (int i = 0; i < ib_len[y]; i++) sb[i] = qb[ib_idx[oy + i]];
+                    int k = simplify(out, clip(sa, ia_len[x], sb, ib_len[y], out, tmp), tol);
+                    if (k >= 3 && bl_polygon_area(out, k) > tol * sqrt(fabs(bl_polygon_area(sa, ia_len[x]))))
+                        return 1;
+                }
+            }
+        }
+    }
+    return 0;
+}
+
+/* Interpenetration of two blocks either of which is not convex: faces of
+ * both in one plane, looking the same way, that overlap (two prisms of one
+ * depth that cross: no vertex or edge of one goes into the other); else a
+ * point deeper than tol inside both: a vertex of one (on its surface,
+ * inside it next to it), the point 2 tol inside each face from the middle
+ * of each of its edges, or an edge of one through a face of the other
+ * (where two surfaces cross, an edge of one meets a face of the other). */
 static int overlapping_any(const bl_block *X, const bl_block *Y, double tol)
 {
+    if (same_way_faces_overlap(&X->solid, &Y->solid, tol)) return 1;
     for (int pass = 0; pass < 2; pass++) {
         const bl_polyhedron *A = pass ? &Y->solid : &X->solid, *B = pass ? &X->solid : &Y->solid;
         for (int i = 0; i < A->nv; i++)
@@ -300,7 +335,7 @@ static int overlapping_any(const bl_block *X, const bl_block *Y, double tol)
                 if (bl_polyhedron_pierced(B, a, b, tol)) return 1;
                 /* the face turns counter-clockwise seen from outside: n x e points into it */
                 bl_vec3 in = bl_v3_unit(bl_v3_cross(n, bl_v3_sub(b, a)));
-                bl_vec3 p = bl_v3_add(bl_v3_scale(bl_v3_add(a, b), 0.5), bl_v3_scale(bl_v3_sub(in, n), 4.0 * tol));
+                bl_vec3 p = bl_v3_add(bl_v3_scale(bl_v3_add(a, b), 0.5), bl_v3_scale(bl_v3_sub(in, n), 2.0 * tol));
                 if (bl_polyhedron_depth(A, p) > tol && bl_polyhedron_depth(B, p) > tol) return 1;
             }
         }

@@ -773,15 +773,15 @@ static int model_load(lua_State *L)
                     fail(L, "%s: field 'at' is missing (the point {x, y} where the force acts)", fn);
                 point_field(L, t, fn, "force", &pl[k].force);
                 if (bl_v2_norm(pl[k].force) == 0) fail(L, "%s: field 'force' is zero", fn);
+                double tol = 1e-9 * hypot(bk->box[2] - bk->box[0], bk->box[3] - bk->box[1]);
+                if (bl_polygon_depth(bk->v, bk->nv, pl[k].at) < -tol)
+                    fail(L, "%s: field 'at' (%g, %g) is outside block %d", fn, pl[k].at.x, pl[k].at.y,
+                         pl[k].block + 1);
             } else if (field_given(L, t, "at")) {
                 fail(L, "%s: field 'at' goes with 'force' (a couple acts on the whole block)", fn);
             } else if (pl[k].moment == 0) {
                 fail(L, "%s: field 'moment' is zero", fn);
             }
-            double tol = 1e-9 * hypot(bk->box[2] - bk->box[0], bk->box[3] - bk->box[1]);
-            if (bl_polygon_depth(bk->v, bk->nv, pl[k].at) < -tol)
-                fail(L, "%s: field 'at' (%g, %g) is outside block %d", fn, pl[k].at.x, pl[k].at.y,
-                     pl[k].block + 1);
             pl[k].live = k;
             kinds[k] = 2;
             lua_pop(L, 1);

@@ -246,6 +246,21 @@ do
   -- (0.1, 1.5) - (0.25, 0.75) = (-0.15, 0.75); its cross with (0.3, -1): 0.15 - 0.225
   load { dead = { block = p, at = { 0.25, 0.75 }, force = { 0.3, -1 }, moment = 0.2 + 0.15 - 0.225 } }
   T.near(solve { flow = "associative" }.alpha, a1, 1e-12, "2D: a force at a point = the force at the centroid and its couple")
+  -- a couple on an L whose centroid lies outside it (no 'at' to check):
+  -- the pair of forces F up at (1, 0.1) and down at (0.1, 1), F 0.9 = M
+  local function ell()
+    model { mu = 0.6 }
+    local l = block { vertices = { { 0, 0 }, { 2, 0 }, { 2, 0.2 }, { 0.2, 0.2 }, { 0.2, 2 }, { 0, 2 } } }
+    block { vertices = { { -1, -1 }, { 3, -1 }, { 3, 0 }, { -1, 0 } }, support = true }
+    return l
+  end
+  local l = ell()
+  load { dead = { block = l, moment = 0.09 } }
+  a1 = solve { flow = "associative" }.alpha
+  l = ell()
+  load { dead = { block = l, at = { 1, 0.1 }, force = { 0, 0.1 } } }
+  load { dead = { block = l, at = { 0.1, 1 }, force = { 0, -0.1 } } }
+  T.near(a1, solve { flow = "associative" }.alpha, 1e-12, "2D couple on an L whose centroid lies outside it = a pair of forces")
 end
 
 -- facade{} and corner{} of a given thickness t: their volume, course by
@@ -334,6 +349,18 @@ do
   load { dead = { block = L, at = { 0.1, 1.6, 1 }, force = { 0, 0, -0.56 } } }
   T.near(spread, solve { flow = "associative" }.alpha, 1e-12,
          "3D: a distributed load on an L whose top's centroid lies outside it = the arms' point loads")
+  -- a U (extruded 1 deep) with a box on one arm: the U's three tops in one
+  -- plan (3 x 1) carry q 3 in all, the box its own share; only the arm
+  -- under the box is hidden (the ground carries the weights and 3 q)
+  model { dim = 3, mu = 0.6 }
+  local base = box { size = { 10, 10, 1 }, at = { 0, 0, -1 }, support = true }
+  local U = extrude { polygon = { { 0, 0 }, { 3, 0 }, { 3, 2 }, { 2, 2 }, { 2, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } },
+                      axis = "y", from = 0, to = 1 }
+  local cap = box { size = { 1, 1, 0.5 }, at = { 2.5, 0.5, 2 } }
+  load { dead = { over = { { -1, -1 }, { 4, 2 } }, q = 10 } }
+  local r = solve { flow = "associative" }
+  T.near(-r.reactions[base].force[3], current():block_info(U).weight + current():block_info(cap).weight + 30, 1e-9,
+         "3D: a U with a box on one arm: its other tops carry their load")
 end
 -- A dome of 16 segments under q = 1 over a square around it: its
 -- extrados, seen from above, is the 16-gon of radius R + t/2, so the

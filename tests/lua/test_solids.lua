@@ -208,6 +208,14 @@ for _, case in ipairs {
   notch(case[2])
   T.raises(function() contacts {} end, "not convex: " .. case[1], "overlapping blocks 2 and 3")
 end
+-- a post through an L's long arm, both 1 deep: no vertex or edge of
+-- either lies inside the other, no probe next to an edge's middle either;
+-- their end faces overlap in one plane
+model { dim = 3 }
+box { size = { 30, 30, 1 }, at = { 0, 0, -1 }, support = true }
+extrude { polygon = { { 0, 0 }, { 1, 0 }, { 1, 2 }, { 10, 2 }, { 10, 3 }, { 0, 3 } }, axis = "y", from = 0, to = 1 }
+box { size = { 1, 1, 8 }, at = { 7.5, 0.5, 0 } }
+T.raises(function() contacts {} end, "not convex: a post through an L's arm, both of one depth", "overlapping blocks 2 and 3")
 
 
 -- The associative LP in 3D (vertex model, friction pyramids).
