@@ -187,8 +187,12 @@ int bl_model_add_solid(bl_model *m, bl_polyhedron *solid, int support, double de
     bl_polyhedron_bbox(solid, box);
     double size = sqrt((box[3] - box[0]) * (box[3] - box[0]) + (box[4] - box[1]) * (box[4] - box[1]) +
                        (box[5] - box[2]) * (box[5] - box[2]));
-    /* (a vertex that is not finite is reported before the tolerance is used) */
-    if (bl_polyhedron_check(solid, 1e-9 * size, id, err)) {
+    /* 1e-9 of the block's size, or, far from the origin (survey
+     * coordinates: 5e6 m), some hundred round-offs of its coordinates
+     * (a vertex that is not finite is reported before the tolerance is used) */
+    double reach = 0.0;
+    for (int d = 0; d < 6; d++) reach = fmax(reach, fabs(box[d]));
+    if (bl_polyhedron_check(solid, fmax(1e-9 * size, 1e-13 * reach), id, err)) {
         bl_polyhedron_free(solid);
         return -1;
     }

@@ -60,6 +60,20 @@ for _, case in ipairs(cases) do
 end
 end
 
+-- Survey coordinates: a dome centred 5e6 east and 4e6 north (UTM-like)
+-- has the alpha of the same dome at the origin, to 1e-8 (its faces were
+-- refused as not planar: the tolerance, 1e-9 of a voussoir's size, was
+-- below the coordinates' round-off).
+do
+  local function dome_alpha(c)
+    model { dim = 3, mu = 0.6 }
+    dome { radius = 2, thickness = 0.2, rings = 4, segments = 12, centre = c }
+    return solve { flow = "associative" }.alpha
+  end
+  T.near(dome_alpha { 5e6, 4e6, 100 }, dome_alpha { 0, 0, 0 }, 1e-8,
+         "a dome at survey coordinates (5e6, 4e6): the alpha of the dome at the origin")
+end
+
 -- A distributed load on a vault equals the 2D one on its arch: the vault
 -- (3 rings, 3 m long) under q = 1 per unit area over the strip
 -- 0.8 <= x <= 1.2, and the arch 3 m thick under q = 3 per unit length over
