@@ -150,6 +150,15 @@ local function point_loads_3d(m, n, t, fail, ratio)
     end
   end
   local plane_tol = math.max(ok and st.tol or 0, tiny)
+  -- Is (a, b) inside the polygon pts, its points' coordinates u and w?  (Even-odd.)
+  local function inside(pts, a, b, u, w)
+    local c = false
+    for k = 1, #pts do
+      local p, r = pts[k], pts[k % #pts + 1]
+      if (p[w] > b) ~= (r[w] > b) and a < p[u] + (r[u] - p[u]) * (b - p[w]) / (r[w] - p[w]) then c = not c end
+    end
+    return c
+  end
   -- Is face f (points v) with normal (nx, ny, nz) covered by its interfaces?
   local function hidden(i, v, f, nx, ny, nz)
     local len, sum, p = math.sqrt(nx * nx + ny * ny + nz * nz), 0, v[f[1]]
@@ -157,18 +166,14 @@ local function point_loads_3d(m, n, t, fail, ratio)
     local u, w = 1, 2
     if math.abs(nx) >= math.abs(ny) and math.abs(nx) >= math.abs(nz) then u, w = 2, 3
     elseif math.abs(ny) >= math.abs(nz) then u, w = 1, 3 end
+    local pts = {}
+    for k, a in ipairs(f) do pts[k] = v[a] end
     for _, s in ipairs(seated[i] or {}) do
       local r = s.at
       if (s.normal[1] * nx + s.normal[2] * ny + s.normal[3] * nz) / len > 1 - 1e-9
-         and math.abs(((r[1] - p[1]) * nx + (r[2] - p[2]) * ny + (r[3] - p[3]) * nz) / len) <= plane_tol then
-        local inside = false
-        for k = 1, #f do
-          local a, b = v[f[k]], v[f[k % #f + 1]]
-          if (a[w] > r[w]) ~= (b[w] > r[w]) and r[u] < a[u] + (b[u] - a[u]) * (r[w] - a[w]) / (b[w] - a[w]) then
-            inside = not inside
-          end
-        end
-        if inside then sum = sum + s.area end
+         and math.abs(((r[1] - p[1]) * nx + (r[2] - p[2]) * ny + (r[3] - p[3]) * nz) / len) <= plane_tol
+         and inside(pts, r[u], r[w], u, w) then
+        sum = sum + s.area
       end
     end
     return sum >= len / 2 * (1 - 1e-9)
@@ -325,21 +330,10 @@ local function point_loads_3d(m, n, t, fail, ratio)
     end
   end
 
-  -- Is (x, y) inside the outline of face f in plan?  (Even-odd.)
-  local function under(f, x, y)
-    local inside, ol = false, f.outline
-    for k = 1, #ol do
-      local p, r = ol[k], ol[k % #ol + 1]
-      if (p[2] > y) ~= (r[2] > y) and x < p[1] + (r[1] - p[1]) * (y - p[2]) / (r[2] - p[2]) then
-        inside = not inside
-      end
-    end
-    return inside
-  end
   return point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx, Fy)
     local x, y, z = Fx / F, Fy / F, nil
     for _, f in ipairs(b.top) do
-      if under(f, x, y) then z = math.max(z or -math.huge, height(f, x, y)) end
+      if inside(f.outline, x, y, 1, 2) then z = math.max(z or -math.huge, height(f, x, y)) end
     end
     if z then return { block = b.id, at = { x, y, z }, force = { 0, 0, -F } } end
     local c = b.cell.at

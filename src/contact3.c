@@ -129,88 +129,123 @@ static int simplify(bl_vec2 *q, int n, double tol)
     return m;
 }
 
-/* A face of B as a counter-clockwise polygon in the frame of A's face f
- * (B's face looks the other way, so its order is reversed). */
-static int face_in(const plane *f, const bl_polyhedron *p, int k, bl_vec2 *q)
+enum { MAXV = 256 };
+
+/* Called for each overlap of two faces: the polygon (k points, in the
+ * first face's frame) and its area; a nonzero return stops the search. */
+typedef int overlap_fn(void *ctx, const bl_vec2 *q, int k, double area);
+
+/* The overlaps of face fa of A (in its frame f) and face fb of B, convex
+ * piece by convex piece, each larger in area than tol times its piece's
+ * size, passed to each(); B's face is taken the other way round where it
+ * faces A (reverse).  Returns the first nonzero return of each(), or 0. */
+static int face_overlaps(const bl_polyhedron *A, int fa, const plane *f, const bl_polyhedron *B, int fb,
+                         int reverse, double tol, overlap_fn *each, void *ctx)
 {
-    int a = p->fs[k], n = p->fs[k + 1] - a;
-    for (int i = 0; i < n; i++) q[i] = to2(f, p->v[p->fi[a + n - 1 - i]]);
-    return n;
+    int a0 = A->fs[fa], na = A->fs[fa + 1] - a0, b0 = B->fs[fb], nb = B->fs[fb + 1] - b0;
+    if (na > MAXV || nb > MAXV) return 0;
+    bl_vec2 qa[MAXV], qb[MAXV], out[2 * MAXV], tmp[2 * MAXV], sa[MAXV], sb[MAXV];
+    int ia_idx[3 * MAXV], ia_len[MAXV], ib_idx[3 * MAXV], ib_len[MAXV];
+    for (int i = 0; i < na; i++) qa[i] = to2(f, A->v[A->fi[a0 + i]]);
+    for (int i = 0; i < nb; i++) qb[i] = to2(f, B->v[B->fi[b0 + (reverse ? nb - 1 - i : i)]]);
+    int pa = convex_pieces(qa, na, ia_idx, ia_len), pb = convex_pieces(qb, nb, ib_idx, ib_len);
+    for (int x = 0, ox = 0; x < pa; ox += ia_len[x], x++) {
+        for (int i = 0; i < ia_len[x]; i++) sa[i] = qa[ia_idx[ox + i]];
+        for (int y = 0, oy = 0; y < pb; oy += ib_len[y], y++) {
+            for (int i = 0; i < ib_len[y]; i++) sb[i] = qb[ib_idx[oy + i]];
+            int k = simplify(out, clip(sa, ia_len[x], sb, ib_len[y], out, tmp), tol);
+            if (k < 3) continue;
+            double area = bl_polygon_area(out, k);
+            if (!(area > tol * sqrt(fabs(bl_polygon_area(sa, ia_len[x]))))) continue;
+            int rc = each(ctx, out, k, area);
+            if (rc) return rc;
+        }
+    }
+    return 0;
+}
+
+/* How far the unit normals of two faces may differ for the faces to lie in
+ * one plane: to within tol over face k's extent (a file's rounding tilts
+ * a small face more than a large one), and 1e-6 at least. */
+static double parallel_limit(const bl_polyhedron *p, int k, double tol)
+{
+    double area;
+    bl_polyhedron_face_normal(p, k, &area);
+    return fmax(1e-6, 2.0 * tol / sqrt(area));
+}
+
+/* What pair3 passes to its overlap callback. */
+typedef struct pair_ctx {
+    bl_model *m;
+    int ia, ib, found;
+    const plane *f;
+    double h, tol, near_d;
+    bl_error *err;
+} pair_ctx;
+
+/* An overlap of two faces that face each other h apart: an interface
+ * (h within tol), else a near-miss. */
+static int add_contact(void *ctx, const bl_vec2 *q, int k, double area)
+{
+    pair_ctx *c = ctx;
+    if (c->h > c->tol) { /* parallel, overlapping, apart: a near-miss */
+        c->near_d = c->near_d > 0.0 ? fmin(c->near_d, c->h) : c->h;
+        return 0;
+    }
+    bl_model *m = c->m;
+    bl_interface j = {0};
+    j.a = c->ia;
+    j.b = c->ib;
+    j.mu = m->mu;
+    j.cohesion = m->cohesion;
+    j.imodel = m->interface_model;
+    j.mu_t = m->mu_t;
+    j.np = k;
+    j.poly = malloc((size_t)k * sizeof *j.poly);
+    if (!j.poly) return bl_error_set(c->err, "contacts: out of memory");
+    for (int i = 0; i < k; i++) j.poly[i] = to3(c->f, q[i]);
+    j.n3 = c->f->n;
+    /* the frame along the polygon's longest edge (the first of those
+     * within 1e-9 of it), which does not depend on where the clipping
+     * began: along the first edge, a dome's symmetric joints got pyramids
+     * turned apart, and moving the dome changed alpha by 0.2 % */
+    bl_vec3 e = bl_v3_sub(j.poly[1], j.poly[0]);
+    for (int i = 1; i < k; i++) {
+        bl_vec3 ei = bl_v3_sub(j.poly[(i + 1) % k], j.poly[i]);
+        if (bl_v3_norm(ei) > (1.0 + 1e-9) * bl_v3_norm(e)) e = ei;
+    }
+    j.t2 = bl_v3_scale(e, 1.0 / bl_v3_norm(e));
+    j.t3 = bl_v3_cross(j.n3, j.t2);
+    j.area3 = area;
+    if (bl_model_add_interface(m, &j, c->err)) {
+        free(j.poly);
+        return -1;
+    }
+    c->found = 1;
+    return 0;
 }
 
 /* Every interface between blocks ia and ib; a near-miss or nothing. */
 static int pair3(bl_model *m, int ia, int ib, double tol, double gap, bl_contact_problems *pr, bl_error *err)
 {
     const bl_polyhedron *A = &m->blocks[ia].solid, *B = &m->blocks[ib].solid;
-    int found = 0;
-    double near_d = 0.0;
-    enum { MAXV = 256 };
-    bl_vec2 qa[MAXV], qb[MAXV], out[2 * MAXV], tmp[2 * MAXV], sa[MAXV], sb[MAXV];
-    int ia_idx[3 * MAXV], ia_len[MAXV], ib_idx[3 * MAXV], ib_len[MAXV];
+    pair_ctx c = {.m = m, .ia = ia, .ib = ib, .tol = tol, .err = err};
     for (int fa = 0; fa < A->nf; fa++) {
         plane f = face_plane(A, fa);
-        int na = A->fs[fa + 1] - A->fs[fa];
-        if (na > MAXV) continue;
+        double lim = parallel_limit(A, fa, tol);
+        c.f = &f;
         for (int fb = 0; fb < B->nf; fb++) {
-            int nb = B->fs[fb + 1] - B->fs[fb];
-            if (nb > MAXV) continue;
             bl_vec3 n = bl_polyhedron_face_normal(B, fb, NULL);
-            if (bl_v3_norm(bl_v3_add(n, f.n)) > 1e-6) continue; /* not facing each other */
-            double h = bl_v3_dot(f.n, bl_v3_sub(B->v[B->fi[B->fs[fb]]], f.o));
-            if (h < -tol || h > gap) continue;
-            for (int i = 0; i < na; i++) qa[i] = to2(&f, A->v[A->fi[A->fs[fa] + i]]);
-            face_in(&f, B, fb, qb);
-            int pa = convex_pieces(qa, na, ia_idx, ia_len), pb = convex_pieces(qb, nb, ib_idx, ib_len);
-            for (int x = 0, ox = 0; x < pa; ox += ia_len[x], x++) {
-                for (int i = 0; i < ia_len[x]; i++) sa[i] = qa[ia_idx[ox + i]];
-                for (int y = 0, oy = 0; y < pb; oy += ib_len[y], y++) {
-                    for (int i = 0; i < ib_len[y]; i++) sb[i] = qb[ib_idx[oy + i]];
-                    int k = simplify(out, clip(sa, ia_len[x], sb, ib_len[y], out, tmp), tol);
-                    if (k < 3) continue;
-                    double area = bl_polygon_area(out, k);
-                    if (!(area > tol * sqrt(fabs(bl_polygon_area(sa, ia_len[x]))))) continue;
-                    if (h > tol) { /* parallel, overlapping, apart: a near-miss */
-                        near_d = near_d > 0.0 ? fmin(near_d, h) : h;
-                        continue;
-                    }
-                    bl_interface c = {0};
-                    c.a = ia;
-                    c.b = ib;
-                    c.mu = m->mu;
-                    c.cohesion = m->cohesion;
-                    c.imodel = m->interface_model;
-                    c.mu_t = m->mu_t;
-                    c.np = k;
-                    c.poly = malloc((size_t)k * sizeof *c.poly);
-                    if (!c.poly) return bl_error_set(err, "contacts: out of memory");
-                    for (int i = 0; i < k; i++) c.poly[i] = to3(&f, out[i]);
-                    c.n3 = f.n;
-                    /* the frame along the polygon's longest edge (the
-                     * first of those within 1e-9 of it), which does not
-                     * depend on where the clipping began: along the first
-                     * edge, a dome's symmetric joints got pyramids turned
-                     * apart, and moving the dome changed alpha by 0.2 % */
-                    bl_vec3 e = bl_v3_sub(c.poly[1], c.poly[0]);
-                    for (int i = 1; i < k; i++) {
-                        bl_vec3 ei = bl_v3_sub(c.poly[(i + 1) % k], c.poly[i]);
-                        if (bl_v3_norm(ei) > (1.0 + 1e-9) * bl_v3_norm(e)) e = ei;
-                    }
-                    c.t2 = bl_v3_scale(e, 1.0 / bl_v3_norm(e));
-                    c.t3 = bl_v3_cross(c.n3, c.t2);
-                    c.area3 = area;
-                    if (bl_model_add_interface(m, &c, err)) {
-                        free(c.poly);
-                        return -1;
-                    }
-                    found = 1;
-                }
-            }
+            if (bl_v3_norm(bl_v3_add(n, f.n)) > lim) continue; /* not facing each other */
+            c.h = bl_v3_dot(f.n, bl_v3_sub(B->v[B->fi[B->fs[fb]]], f.o));
+            if (c.h < -tol || c.h > gap) continue;
+            if (face_overlaps(A, fa, &f, B, fb, 1, tol, add_contact, &c)) return -1;
         }
     }
-    if (near_d > 0.0 && !found && !bl_contact_declared(m, ia, ib)) {
+    if (c.near_d > 0.0 && !c.found && !bl_contact_declared(m, ia, ib)) {
         if (pr->nnear < 5)
             snprintf(pr->near[pr->nnear], sizeof pr->near[0], "blocks %d and %d (gap %.3g)",
-                     ia + 1, ib + 1, near_d);
+                     ia + 1, ib + 1, c.near_d);
         pr->nnear++;
     }
     return 0;
@@ -279,35 +314,24 @@ static int overlapping3(const bl_block *X, const bl_block *Y, double tol)
     return 1;
 }
 
+static int any_overlap(void *ctx, const bl_vec2 *q, int k, double area)
+{
+    (void)ctx, (void)q, (void)k, (void)area;
+    return 1;
+}
+
 /* Whether a face of A and a face of B lie in one plane (within tol), look
  * the same way and overlap over an area (more than tol times the piece's
  * size): the blocks then overlap next to it, on the same side of it. */
 static int same_way_faces_overlap(const bl_polyhedron *A, const bl_polyhedron *B, double tol)
 {
-    enum { MAXV = 256 };
-    bl_vec2 qa[MAXV], qb[MAXV], out[2 * MAXV], tmp[2 * MAXV], sa[MAXV], sb[MAXV];
-    int ia_idx[3 * MAXV], ia_len[MAXV], ib_idx[3 * MAXV], ib_len[MAXV];
     for (int fa = 0; fa < A->nf; fa++) {
         plane f = face_plane(A, fa);
-        int na = A->fs[fa + 1] - A->fs[fa];
-        if (na > MAXV) continue;
+        double lim = parallel_limit(A, fa, tol);
         for (int fb = 0; fb < B->nf; fb++) {
-            int b0 = B->fs[fb], nb = B->fs[fb + 1] - b0;
-            if (nb > MAXV) continue;
-            if (bl_v3_norm(bl_v3_sub(bl_polyhedron_face_normal(B, fb, NULL), f.n)) > 1e-6) continue;
-            if (fabs(bl_v3_dot(f.n, bl_v3_sub(B->v[B->fi[b0]], f.o))) > tol) continue;
-            for (int i = 0; i < na; i++) qa[i] = to2(&f, A->v[A->fi[A->fs[fa] + i]]);
-            for (int i = 0; i < nb; i++) qb[i] = to2(&f, B->v[B->fi[b0 + i]]);
-            int pa = convex_pieces(qa, na, ia_idx, ia_len), pb = convex_pieces(qb, nb, ib_idx, ib_len);
-            for (int x = 0, ox = 0; x < pa; ox += ia_len[x], x++) {
-                for (int i = 0; i < ia_len[x]; i++) sa[i] = qa[ia_idx[ox + i]];
-                for (int y = 0, oy = 0; y < pb; oy += ib_len[y], y++) {
-                    for (int i = 0; i < ib_len[y]; i++) sb[i] = qb[ib_idx[oy + i]];
-                    int k = simplify(out, clip(sa, ia_len[x], sb, ib_len[y], out, tmp), tol);
-                    if (k >= 3 && bl_polygon_area(out, k) > tol * sqrt(fabs(bl_polygon_area(sa, ia_len[x]))))
-                        return 1;
-                }
-            }
+            if (bl_v3_norm(bl_v3_sub(bl_polyhedron_face_normal(B, fb, NULL), f.n)) > lim) continue;
+            if (fabs(bl_v3_dot(f.n, bl_v3_sub(B->v[B->fi[B->fs[fb]]], f.o))) > tol) continue;
+            if (face_overlaps(A, fa, &f, B, fb, 0, tol, any_overlap, NULL)) return 1;
         }
     }
     return 0;

@@ -762,26 +762,20 @@ static int model_load(lua_State *L)
                 fail(L, "%s: block %d is a support; loads on it do nothing", fn,
                            pl[k].block + 1);
             pl[k].moment = number_field(L, t, fn, "moment", 0.0, ANY);
-            int has_force = field_given(L, t, "force");
-            if (!has_force && !field_given(L, t, "moment"))
+            if (!field_given(L, t, "force") && !field_given(L, t, "moment"))
                 fail(L, "%s: give field 'force' {fx, fy} (at 'at'), 'moment' m (a couple, counter-clockwise), "
                      "or both", fn);
             const bl_block *bk = &m->blocks[pl[k].block];
             pl[k].at = bk->centroid;
-            if (has_force) {
-                if (!point_field(L, t, fn, "at", &pl[k].at))
-                    fail(L, "%s: field 'at' is missing (the point {x, y} where the force acts)", fn);
-                point_field(L, t, fn, "force", &pl[k].force);
-                if (bl_v2_norm(pl[k].force) == 0) fail(L, "%s: field 'force' is zero", fn);
+            if (point_field(L, t, fn, "at", &pl[k].at)) {
                 double tol = 1e-9 * hypot(bk->box[2] - bk->box[0], bk->box[3] - bk->box[1]);
                 if (bl_polygon_depth(bk->v, bk->nv, pl[k].at) < -tol)
                     fail(L, "%s: field 'at' (%g, %g) is outside block %d", fn, pl[k].at.x, pl[k].at.y,
                          pl[k].block + 1);
-            } else if (field_given(L, t, "at")) {
-                fail(L, "%s: field 'at' goes with 'force' (a couple acts on the whole block)", fn);
-            } else if (pl[k].moment == 0) {
-                fail(L, "%s: field 'moment' is zero", fn);
             }
+            point_field(L, t, fn, "force", &pl[k].force);
+            if (bl_v2_norm(pl[k].force) == 0 && pl[k].moment == 0)
+                fail(L, "%s: fields 'force' and 'moment' are zero", fn);
             pl[k].live = k;
             kinds[k] = 2;
             lua_pop(L, 1);

@@ -133,7 +133,10 @@ int bl_polyhedron_pierced(const bl_polyhedron *p, bl_vec3 a, bl_vec3 b, double t
         double ha = bl_v3_dot(n, bl_v3_sub(a, o)), hb = bl_v3_dot(n, bl_v3_sub(b, o));
         if (!((ha > tol && hb < -tol) || (ha < -tol && hb > tol))) continue;
         bl_vec3 x = bl_v3_add(a, bl_v3_scale(bl_v3_sub(b, a), ha / (ha - hb)));
-        if (inside_face(p, k, n, x) && edge_distance(p, k, x) > tol) return 1;
+        if (!inside_face(p, k, n, x) || !(edge_distance(p, k, x) > tol)) continue;
+        /* and on into p: where ab is 2 tol inside the plane, deeper than tol */
+        double s = fmin(1.0, fmax(0.0, (ha + 2.0 * tol) / (ha - hb)));
+        if (bl_polyhedron_depth(p, bl_v3_add(a, bl_v3_scale(bl_v3_sub(b, a), s))) > tol) return 1;
     }
     return 0;
 }

@@ -65,9 +65,10 @@ int bl_polyhedron_on_face(const bl_polyhedron *p, int k, bl_vec3 q, double tol);
  * inside, negative outside (as bl_polygon_depth in 2D). */
 double bl_polyhedron_depth(const bl_polyhedron *p, bl_vec3 q);
 
-/* Whether the segment ab passes through a face of p: a and b farther than
- * tol from the face's plane on either side of it, and the point where ab
- * crosses the plane inside the face, farther than tol from its edges. */
+/* Whether the segment ab passes through a face of p into it: a and b
+ * farther than tol from the face's plane on either side of it, the point
+ * where ab crosses the plane inside the face, farther than tol from its
+ * edges, and the point of ab 2 tol past the plane deeper than tol in p. */
 int bl_polyhedron_pierced(const bl_polyhedron *p, bl_vec3 a, bl_vec3 b, double tol);
 
 /* Checks a polygon of n points in space (in order, either way round):

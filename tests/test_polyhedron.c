@@ -201,11 +201,39 @@ static void depth(void **state)
     bl_polyhedron_free(&p);
 }
 
+/* Segments through a face of a box 2 x 3 x 4, by hand: through the face
+ * x = 0 into the box, either way; along it (not through); through it only
+ * within tol of its edge; ending within tol of it; and through it far from
+ * its edges but out again at once, never deeper than tol. */
+static void pierced(void **state)
+{
+    (void)state;
+    bl_vec3 v[8];
+    box(v, 2, 3, 4, 0);
+    bl_polyhedron p;
+    bl_error err;
+    double tol = 1e-6;
+    assert_int_equal(bl_polyhedron_make(&p, v, 8, box_fs, box_fi, 6), 0);
+    assert_int_equal(bl_polyhedron_check(&p, 1e-9, 1, &err), 0);
+    assert_true(bl_polyhedron_pierced(&p, bl_v3(-1, 1.5, 2), bl_v3(1, 1.5, 2), tol));
+    assert_true(bl_polyhedron_pierced(&p, bl_v3(1, 1.5, 2), bl_v3(-1, 1.5, 2), tol));
+    assert_false(bl_polyhedron_pierced(&p, bl_v3(0, -1, 2), bl_v3(0, 4, 2), tol));
+    assert_false(bl_polyhedron_pierced(&p, bl_v3(-1, 0.5 * tol, 2), bl_v3(1, 0.5 * tol, 2), tol));
+    assert_false(bl_polyhedron_pierced(&p, bl_v3(-1, 1.5, 2), bl_v3(0.5 * tol, 1.5, 2), tol));
+    /* through x = 0 at y = 0.5, then out through y = 0 at x = 0.3 tol:
+     * never deeper than 0.3 tol */
+    assert_false(bl_polyhedron_pierced(&p, bl_v3(-3 * tol, 5.5, 2), bl_v3(3.3 * tol, -5, 2), tol));
+    /* the same, out through y = 0 at x = 3 tol: deeper */
+    assert_true(bl_polyhedron_pierced(&p, bl_v3(-30 * tol, 5.5, 2), bl_v3(33 * tol, -5, 2), tol));
+    bl_polyhedron_free(&p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(box_volume), cmocka_unit_test(tetrahedron), cmocka_unit_test(bad_solids),
         cmocka_unit_test(inverted_faces), cmocka_unit_test(hull), cmocka_unit_test(depth),
+        cmocka_unit_test(pierced),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -261,6 +261,11 @@ do
   load { dead = { block = l, at = { 1, 0.1 }, force = { 0, 0.1 } } }
   load { dead = { block = l, at = { 0.1, 1 }, force = { 0, -0.1 } } }
   T.near(a1, solve { flow = "associative" }.alpha, 1e-12, "2D couple on an L whose centroid lies outside it = a pair of forces")
+  -- a force without 'at' acts at the centroid, as in 3D
+  p = pier()
+  load { live = "none" }
+  load { live = { block = p, force = { 1, 0 } } }
+  T.near(solve { flow = "associative" }.alpha, W * b / h, 1e-9, "2D live force at the centroid (no 'at'): alpha = W b/h")
 end
 
 -- facade{} and corner{} of a given thickness t: their volume, course by

@@ -270,6 +270,29 @@ local rb = import { file = write(".obj", six("stone", { { 0, 0, 0 }, { 0.8, 0, 0
   { 0, 0, 0.3 }, { 0.8, 0, 0.3 }, { 0.8, 0.3, 0.3 }, { 0, 0.3, 0.3 } }, cube)) }
 T.near(current():block_info(rb[1]).volume, 0.072, 1e-5, "OBJ at 6 decimals: a turned box is its convex hull")
 T.near(rb.resolution, 1e-6, 1e-12, "OBJ at 6 decimals: .resolution 1e-6")
+-- two such stones stacked on a slab, written with 6 decimals and with 17
+-- digits: the faces that meet lie in one plane only to the rounding, and
+-- contacts{ tol = 10 * resolution } finds them; the same alpha, to 1e-5
+local function stack(fmt)
+  local out = {}
+  for _, s in ipairs { { "ground", -1, -1, -0.5, 3, 3, 0.5 }, { "s1", 0, 0, 0, 0.8, 0.3, 0.3 },
+                       { "s2", 0, 0, 0.3, 0.8, 0.3, 0.3 } } do
+    local x0, y0, z0, a, b, c = table.unpack(s, 2)
+    out[#out + 1] = "o " .. s[1]
+    for _, z in ipairs { z0, z0 + c } do
+      for _, p in ipairs { { x0, y0 }, { x0 + a, y0 }, { x0 + a, y0 + b }, { x0, y0 + b } } do
+        out[#out + 1] = ("v " .. fmt .. " " .. fmt .. " " .. fmt):format(table.unpack(turned { p[1], p[2], z }))
+      end
+    end
+    for _, f in ipairs(cube) do out[#out + 1] = ("f %d %d %d %d"):format(f[1] - 9, f[2] - 9, f[3] - 9, f[4] - 9) end
+  end
+  model { dim = 3, mu = 0.6 }
+  local b = import { file = write(".obj", table.concat(out, "\n")), support = "ground" }
+  if fmt == "%.6f" then contacts { tol = 10 * b.resolution } end
+  load { live = "horizontal", direction = turned { 0, 1, 0 } }
+  return solve { flow = "associative" }.alpha
+end
+T.near(stack("%.6f"), stack("%.17g"), 1e-5, "OBJ at 6 decimals: stacked turned stones meet with contacts{ tol = 10 resolution }")
 -- the L of part 2 turned the same way: not convex, its bent faces cut
 -- into triangles; volume 3 to the rounding
 local lv, lf = {}, {}

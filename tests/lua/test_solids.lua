@@ -204,7 +204,9 @@ for _, case in ipairs {
                 from = 0, to = 1 } end },
   { "a box 0.1 into the notch's corner", function() box { size = { 1, 1, 1 }, at = { 1.4, 0.5, 0.9 } } end },
   { "a thin bar through the L's upright, its ends outside", function()
-      box { size = { 0.1, 3, 0.1 }, at = { 0.5, 0.5, 1.5 } } end } } do
+      box { size = { 0.1, 3, 0.1 }, at = { 0.5, 0.5, 1.5 } } end },
+  { "a bar through the L's upright, its edges' middles outside too (an edge through a face)", function()
+      box { size = { 0.1, 6, 0.1 }, at = { 0.5, 2, 1.5 } } end } } do
   notch(case[2])
   T.raises(function() contacts {} end, "not convex: " .. case[1], "overlapping blocks 2 and 3")
 end
