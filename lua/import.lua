@@ -187,9 +187,7 @@ return function(M)
     fh:close()
     if not text then fail(("field 'file': cannot read '%s': %s"):format(t.file, tostring(err))) end
     local function where(line) return ("'%s' line %d"):format(t.file, line) end
-    if format == "dxf" and text:sub(1, 18) ~= "AutoCAD Binary DXF" or format == "obj" then
-      text = text:gsub("^\239\187\191", ""):gsub("\r\n?", "\n") -- a byte-order mark; CR LF or CR alone
-    end
+    text = text:gsub("^\239\187\191", ""):gsub("\r\n?", "\n") -- a byte-order mark; CR LF or CR alone
 
     local shapes, skipped, decimals
     if format == "obj" then
