@@ -9,7 +9,9 @@
 -- {x, z}) swept along y over `length`, in `segments` rings of voussoirs
 -- (default 1), on two springings running its whole length.
 -- fill = { level = H, density = g }: the weight of a fill up to the height
--- H, carried by the extrados as dead point loads (doc/guide.md, arch{}).
+-- H, carried by each voussoir at the centroid of the fill above it (a
+-- carried weight: dead, and moved by the weight-proportional live load;
+-- doc/guide.md, arch{}).
 local report = require "blocklim.report"
 
 return function(M, load_ratio)
@@ -26,7 +28,8 @@ return function(M, load_ratio)
 
   -- The fill above the extrados chord from p to q (p left of q) up to the
   -- height h: its area (a trapezoid, clipped where the chord rises above
-  -- h) and the point of the chord below its centroid.
+  -- h) and its centroid: x̄ of the trapezoid of parallel sides d1, d2, and
+  -- ȳ = ∫ (h² - y(x)²) / 2 dx / area with y linear along the chord.
   local function fill_over(p, q, h)
     local x1, y1, x2, y2 = p[1], p[2], q[1], q[2]
     if y1 >= h and y2 >= h then return 0 end
@@ -36,7 +39,8 @@ return function(M, load_ratio)
     local area = (x2 - x1) * (d1 + d2) / 2
     if not (area > 0) then return 0 end
     local x = x1 + (x2 - x1) * (d1 + 2 * d2) / (3 * (d1 + d2))
-    return area, x, y1 + (y2 - y1) * (x - x1) / (x2 - x1)
+    local y = (x2 - x1) / 2 * (h * h - (y1 * y1 + y1 * y2 + y2 * y2) / 3) / area
+    return area, x, y
   end
 
   return function(t)
@@ -149,21 +153,18 @@ return function(M, load_ratio)
           -- its share of the fill: 2D across the model's thickness, 3D
           -- along its piece of the vault
           local w = solid and length / segments or m:block_info(id).thickness
-          local f = -fill.density * area * w
+          local f = fill.density * area * w
           local own = m:block_info(id).weight
-          if not (-f <= load_ratio * own) then -- and not inf, nor NaN
+          if not (f <= load_ratio * own) then -- and not inf, nor NaN
             fail(("field 'fill': the fill over voussoir %d weighs %.6g, more than %g times the voussoir (%.6g): "
-                  .. "the solve would not hold it"):format(i + 1, -f, load_ratio, own))
+                  .. "the solve would not hold it"):format(i + 1, f, load_ratio, own))
           end
-          loads[#loads + 1] = { block = id, force = f,
+          loads[#loads + 1] = { block = id, weight = f,
                                 at = solid and { x, length * (k - 0.5) / segments, y } or { x, y } }
         end
       end
     end
-    for _, l in ipairs(loads) do
-      local f = solid and { 0, 0, l.force } or { 0, l.force }
-      M.load { dead = { block = l.block, at = l.at, force = f } }
-    end
+    for _, l in ipairs(loads) do M.load { dead = l } end
     -- Springings continue each end joint along the arch's tangent, away from it.
     local springs = {}
     for _, e in ipairs { { a0, 1 }, { a0 - 2 * half, -1 } } do

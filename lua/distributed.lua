@@ -7,7 +7,10 @@
 -- number, or a function q(x, y) of the point (x, y) of the top surface.
 -- Each block's share is its resultant: the force -(0, ∫ q dx) through
 -- x̄ = ∫ x q dx / ∫ q dx, acting on its top at x̄.  Parts that land on
--- supports are carried by them.
+-- supports are carried by them.  With weight = true (dead loads only) q is
+-- the weight of what the blocks carry (a floor): each resultant becomes a
+-- carried weight at the same point, on which the weight-proportional live
+-- load acts too.
 local M = {}
 local show = require("blocklim.report").show
 
@@ -337,22 +340,15 @@ local function point_loads_3d(m, n, t, fail, ratio)
     end
     if z then return { block = b.id, at = { x, y, z }, force = { 0, 0, -F } } end
     local c = b.cell.at
+    -- a carried weight may act off its block: on the resultant's line, at
+    -- the height of the block's largest part
+    if t.weight then return { block = b.id, at = { x, y, c[3] }, force = { 0, 0, -F } } end
     return { block = b.id, at = c, force = { 0, 0, -F }, moment = { -F * (y - c[2]), F * (x - c[1]), 0 } }
   end)
 end
 
--- The point loads {block, at, force} of a distributed load t on model m
--- (blocks 1..n), each at most `ratio` times its block's weight, checked
--- whole before the caller applies any (so that applying them cannot
--- fail); errors start with fn ("load dead").
-function M.point_loads(m, n, t, fn, ratio)
-  local function fail(msg) error(fn .. ": " .. msg, 0) end
-  for k in pairs(t) do
-    if k ~= "over" and k ~= "q" then
-      fail(("unknown field '%s' of a distributed load (fields: over, q)"):format(tostring(k)))
-    end
-  end
-  if m:dim() == 3 then return point_loads_3d(m, n, t, fail, ratio) end
+-- 2D: { over = {x0, x1}, q = w }
+local function point_loads_2d(m, n, t, fail, ratio)
   local o = t.over
   if type(o) ~= "table" or #o ~= 2 or not finite(o[1]) or not finite(o[2]) or not (o[1] < o[2]) then
     fail("field 'over' must be {x0, x1}, two finite numbers with x0 < x1")
@@ -425,6 +421,32 @@ function M.point_loads(m, n, t, fn, ratio)
     local x = Fx / F
     return { block = b.id, at = { x, (top(b, x)) }, force = { 0, -F } }
   end)
+end
+
+-- The point loads {block, at, force} (or, with t.weight, {block, at, weight}) of a distributed load t on model m
+-- (blocks 1..n), each at most `ratio` times its block's weight, checked
+-- whole before the caller applies any (so that applying them cannot
+-- fail); errors start with fn ("load dead").
+function M.point_loads(m, n, t, fn, ratio)
+  local function fail(msg) error(fn .. ": " .. msg, 0) end
+  for k in pairs(t) do
+    if k ~= "over" and k ~= "q" and k ~= "weight" then
+      fail(("unknown field '%s' of a distributed load (fields: over, q, weight)"):format(tostring(k)))
+    end
+  end
+  if t.weight ~= nil and type(t.weight) ~= "boolean" then
+    fail("field 'weight' must be true (q is the weight of what the blocks carry) or false, got "
+         .. tostring(t.weight))
+  end
+  if t.weight and fn ~= "load dead" then
+    fail("field 'weight' is for dead loads (a carried weight is dead; the weight-proportional live load "
+         .. "acts on it by itself)")
+  end
+  local loads = m:dim() == 3 and point_loads_3d(m, n, t, fail, ratio) or point_loads_2d(m, n, t, fail, ratio)
+  if t.weight then -- each resultant, straight down, as the weight it is
+    for _, l in ipairs(loads) do l.weight, l.force = -l.force[#l.force], nil end
+  end
+  return loads
 end
 
 return M

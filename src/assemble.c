@@ -277,7 +277,8 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
     }
 
     /* Loads: self weight (dead) and weight-proportional live load at the
-     * centroids, point loads with their moments. */
+     * centroids, point loads with their moments (a carried weight in both,
+     * at its point). */
     bl_vec2 g = bl_model_gravity(m);
     for (int i = 0; i < nb; i++) {
         int r = s->block_row[i];
@@ -296,12 +297,18 @@ bl_system *bl_system_build(const bl_model *m, bl_friction_form form, bl_error *e
         const bl_point_load *pl = &m->loads[l];
         int r = s->block_row[pl->block];
         if (r < 0) continue;
-        bl_vec2 f = bl_v2_scale(pl->force, 1.0 / s->W0);
         bl_vec2 arm = bl_v2_scale(bl_v2_sub(pl->at, m->blocks[pl->block].centroid), 1.0 / s->L0);
-        double *dst = pl->live ? fL : s->rhs, sg = pl->live ? 1.0 : -1.0;
-        dst[r] += sg * f.x;
-        dst[r + 1] += sg * f.y;
-        dst[r + 2] += sg * (bl_v2_cross(arm, f) + pl->moment / (s->W0 * s->L0));
+        bl_vec2 fd, fl;
+        bl_point_load_forces(m, pl, &fd, &fl);
+        fd = bl_v2_scale(fd, 1.0 / s->W0);
+        fl = bl_v2_scale(fl, 1.0 / s->W0);
+        double c = pl->moment / (s->W0 * s->L0);
+        s->rhs[r] -= fd.x;
+        s->rhs[r + 1] -= fd.y;
+        s->rhs[r + 2] -= bl_v2_cross(arm, fd) + (pl->live ? 0.0 : c);
+        fL[r] += fl.x;
+        fL[r + 1] += fl.y;
+        fL[r + 2] += bl_v2_cross(arm, fl) + (pl->live ? c : 0.0);
     }
     s = bl_system_finish(s, nz, fL, err);
     free(fL);

@@ -322,7 +322,8 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
     }
 
     /* self weight (dead, along gravity) and the weight-proportional live
-     * load at the centroids; point forces with their moments, and couples */
+     * load at the centroids; point forces with their moments, and couples
+     * (a carried weight in both, at its point) */
     bl_vec3 g = bl_model_gravity3(m), d = m->live_dir3;
     for (int i = 0; i < nb; i++) {
         int r = s->block_row[i];
@@ -343,12 +344,18 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
         const bl_point_load *pl = &m->loads[l];
         int r = s->block_row[pl->block];
         if (r < 0) continue;
-        bl_vec3 f = bl_v3_scale(pl->force3, 1.0 / s->W0);
         bl_vec3 arm = bl_v3_scale(bl_v3_sub(pl->at3, m->blocks[pl->block].centroid3), 1.0 / s->L0);
-        bl_vec3 mo = bl_v3_add(moment(arm, f), bl_v3_scale(pl->moment3, 1.0 / (s->W0 * s->L0)));
-        double v[6] = {f.x, f.y, f.z, mo.x, mo.y, mo.z};
-        double *dst = pl->live ? fL : s->rhs, sg = pl->live ? 1.0 : -1.0;
-        for (int i = 0; i < 6; i++) dst[r + i] += sg * v[i];
+        bl_vec3 fd, fl, c = bl_v3_scale(pl->moment3, 1.0 / (s->W0 * s->L0)), zero = bl_v3(0.0, 0.0, 0.0);
+        bl_point_load_forces3(m, pl, &fd, &fl);
+        fd = bl_v3_scale(fd, 1.0 / s->W0);
+        fl = bl_v3_scale(fl, 1.0 / s->W0);
+        bl_vec3 md = bl_v3_add(moment(arm, fd), pl->live ? zero : c);
+        bl_vec3 ml = bl_v3_add(moment(arm, fl), pl->live ? c : zero);
+        double d[6] = {fd.x, fd.y, fd.z, md.x, md.y, md.z}, l6[6] = {fl.x, fl.y, fl.z, ml.x, ml.y, ml.z};
+        for (int i = 0; i < 6; i++) {
+            s->rhs[r + i] -= d[i];
+            fL[r + i] += l6[i];
+        }
     }
     s = bl_system_finish(s, nz, fL, err);
     free(fL);

@@ -399,8 +399,8 @@ int bl_assoc_dead_alone(const bl_model *m, const bl_solve_options *o, bl_solutio
 {
     bl_model *c = bl_model_copy(m);
     if (!c) return bl_error_set(err, "solve: out of memory");
-    /* the dead load, turned by the tilt, becomes the live load; the live
-     * load goes */
+    /* the dead load, turned by the tilt, becomes the live load (carried
+     * weights as the forces they are); the live load goes */
     c->live_weight = c->self_weight;
     c->live_dir = bl_model_gravity(m);
     c->live_dir3 = bl_model_gravity3(m);
@@ -409,8 +409,15 @@ int bl_assoc_dead_alone(const bl_model *m, const bl_solve_options *o, bl_solutio
     int n = 0;
     for (int l = 0; l < c->nloads; l++)
         if (!c->loads[l].live) {
-            c->loads[n] = c->loads[l];
-            c->loads[n++].live = 1;
+            bl_point_load *pl = &c->loads[n];
+            *pl = c->loads[l];
+            if (pl->weight > 0.0) { /* its dead force, as a force */
+                pl->force = bl_v2_scale(bl_model_gravity(m), pl->weight);
+                pl->force3 = bl_v3_scale(bl_model_gravity3(m), pl->weight);
+                pl->weight = 0.0;
+            }
+            pl->live = 1;
+            n++;
         }
     c->nloads = n;
     bl_solve_options d = *o;

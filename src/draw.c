@@ -295,6 +295,14 @@ static double max_speed(const bl_solution *s)
     return maxd;
 }
 
+static void grow(double box[4], bl_vec2 q)
+{
+    box[0] = fmin(box[0], q.x);
+    box[1] = fmin(box[1], q.y);
+    box[2] = fmax(box[2], q.x);
+    box[3] = fmax(box[3], q.y);
+}
+
 /* Scale of the mechanism and bounding box of what will be drawn. */
 static void extent(pic *P, double box[4])
 {
@@ -307,24 +315,20 @@ static void extent(pic *P, double box[4])
     for (int b = 0; m->dim == 3 && b < m->nblocks; b++) {
         const bl_polyhedron *S = &m->blocks[b].solid;
         for (int i = 0; i < S->nv; i++)
-            for (int pass = 0; pass < 2; pass++) {
-                bl_vec2 q = project(P, pass ? moved3(P, b, S->v[i]) : S->v[i]);
-                box[0] = fmin(box[0], q.x);
-                box[1] = fmin(box[1], q.y);
-                box[2] = fmax(box[2], q.x);
-                box[3] = fmax(box[3], q.y);
-            }
+            for (int pass = 0; pass < 2; pass++) grow(box, project(P, pass ? moved3(P, b, S->v[i]) : S->v[i]));
     }
     for (int b = 0; m->dim == 2 && b < m->nblocks; b++) {
         const bl_block *B = &m->blocks[b];
         for (int i = 0; i < B->nv; i++)
-            for (int pass = 0; pass < 2; pass++) {
-                bl_vec2 q = pass ? moved(P, b, B->v[i]) : B->v[i];
-                box[0] = fmin(box[0], q.x);
-                box[1] = fmin(box[1], q.y);
-                box[2] = fmax(box[2], q.x);
-                box[3] = fmax(box[3], q.y);
-            }
+            for (int pass = 0; pass < 2; pass++) grow(box, pass ? moved(P, b, B->v[i]) : B->v[i]);
+    }
+    /* carried weights may lie off their blocks (a fill's centroids) */
+    for (int l = 0; l < m->nloads; l++) {
+        const bl_point_load *pl = &m->loads[l];
+        if (!(pl->weight > 0.0)) continue;
+        for (int pass = 0; pass < 2; pass++)
+            grow(box, m->dim == 3 ? project(P, pass ? moved3(P, pl->block, pl->at3) : pl->at3)
+                                  : pass ? moved(P, pl->block, pl->at) : pl->at);
     }
 }
 
@@ -712,22 +716,23 @@ static void draw3(cairo_t *cr, const pic *P)
 }
 
 /* Every point load as an arrow ending where it acts (on its block as
- * moved), along its force, of one length (not to scale): dead grey, live
- * purple.  A couple alone, or a force along the line of sight, has none. */
+ * moved), along its force (a carried weight along gravity), of one length
+ * (not to scale): dead grey, live purple.  A couple alone, or a force along the line of sight, has none. */
 static void load_arrows(cairo_t *cr, const pic *P)
 {
     const bl_model *m = P->m;
     double len = 0.06 * P->w, head = fmax(3.0, 5.0 * P->mark);
     for (int l = 0; l < m->nloads; l++) {
         const bl_point_load *pl = &m->loads[l];
+        int w = pl->weight > 0.0; /* a carried weight: along gravity */
         bl_vec2 at, ahead;
         if (P->dim == 3) {
             bl_vec3 p = moved3(P, pl->block, pl->at3);
             at = dev(P, project(P, p));
-            ahead = dev(P, project(P, bl_v3_add(p, bl_v3_unit(pl->force3))));
+            ahead = dev(P, project(P, bl_v3_add(p, bl_v3_unit(w ? bl_model_gravity3(m) : pl->force3))));
         } else {
             at = dev(P, moved(P, pl->block, pl->at));
-            ahead = dev(P, bl_v2_add(moved(P, pl->block, pl->at), bl_v2_unit(pl->force)));
+            ahead = dev(P, bl_v2_add(moved(P, pl->block, pl->at), bl_v2_unit(w ? bl_model_gravity(m) : pl->force)));
         }
         bl_vec2 d = bl_v2_sub(ahead, at);
         double n = bl_v2_norm(d);

@@ -634,6 +634,20 @@ static int model_interface(lua_State *L)
     return 0;
 }
 
+/* Field 'weight' of the point-load table at t (load dead or live, k):
+ * a carried weight, dead, given alone; 0 when absent. */
+static double weight_field(lua_State *L, int t, const char *fn, int k)
+{
+    if (!field_given(L, t, "weight")) return 0.0;
+    if (k)
+        fail(L, "%s: field 'weight' is for dead loads (a carried weight is dead; the weight-proportional "
+                "live load acts on it by itself)", fn);
+    if (field_given(L, t, "force") || field_given(L, t, "moment"))
+        fail(L, "%s: give field 'weight' alone (a carried weight acts along gravity), or 'force' and "
+                "'moment'", fn);
+    return number_field(L, t, fn, "weight", 0.0, POSITIVE);
+}
+
 /* What load{} asked, applied (2D and 3D alike): kinds[0] and kinds[1] are
  * the dead and live choices (0 self weight / horizontal, 1 none, 2 the
  * point load in pl, -1 not given). */
@@ -659,10 +673,12 @@ static void apply_loads(lua_State *L, bl_model *m, const int kinds[2], const bl_
 /* load{} in a 3D model: the self weight along gravity; a live load
  * proportional to weight along a horizontal {dx, dy} or any {dx, dy, dz}
  * direction; point loads { block, at = {x, y, z}, force = {fx, fy, fz},
- * moment = {mx, my, mz} } (a force, a couple, or both), dead or live. */
+ * moment = {mx, my, mz} } (a force, a couple, or both), dead or live, or
+ * a carried weight { block, at, weight } (dead; its 'at' may lie outside
+ * the block). */
 static int load_3d(lua_State *L, bl_model *m)
 {
-    static const char *const point_fields[] = {"block", "at", "force", "moment", NULL};
+    static const char *const point_fields[] = {"block", "at", "force", "moment", "weight", NULL};
     static const char *const dead_choices[] = {"self-weight", "none", NULL};
     static const char *const live_choices[] = {"horizontal", "none", NULL};
     double tilt = number_field(L, 2, "load", "tilt", NAN, ANY);
@@ -693,22 +709,24 @@ static int load_3d(lua_State *L, bl_model *m)
         lua_pop(L, 1);
         if (m->blocks[pl[k].block].support)
             fail(L, "%s: block %d is a support; loads on it do nothing", fn, pl[k].block + 1);
+        pl[k].weight = weight_field(L, t, fn, k);
         int has_force = field_given(L, t, "force"), has_moment = field_given(L, t, "moment");
-        if (!has_force && !has_moment)
-            fail(L, "%s: give field 'force' {fx, fy, fz} (at 'at'), 'moment' {mx, my, mz}, or both", fn);
+        if (!has_force && !has_moment && !pl[k].weight)
+            fail(L, "%s: give field 'force' {fx, fy, fz} (at 'at'), 'moment' {mx, my, mz}, or both; or "
+                    "'weight'", fn);
         pl[k].at3 = m->blocks[pl[k].block].centroid3;
         if (field(L, t, "at")) {
             pl[k].at3 = to_point3(L, fn, "field 'at'");
             const bl_block *bk = &m->blocks[pl[k].block];
             const double *b = bk->box3;
             double tol = 1e-9 * hypot(hypot(b[3] - b[0], b[4] - b[1]), b[5] - b[2]);
-            if (bl_polyhedron_depth(&bk->solid, pl[k].at3) < -tol)
+            if (!pl[k].weight && bl_polyhedron_depth(&bk->solid, pl[k].at3) < -tol)
                 fail(L, "%s: field 'at' (%g, %g, %g) is outside block %d", fn, pl[k].at3.x,
                      pl[k].at3.y, pl[k].at3.z, pl[k].block + 1);
         }
         if (field(L, t, "force")) pl[k].force3 = to_point3(L, fn, "field 'force'");
         if (field(L, t, "moment")) pl[k].moment3 = to_point3(L, fn, "field 'moment'");
-        if (bl_v3_norm(pl[k].force3) == 0 && bl_v3_norm(pl[k].moment3) == 0)
+        if (!pl[k].weight && bl_v3_norm(pl[k].force3) == 0 && bl_v3_norm(pl[k].moment3) == 0)
             fail(L, "%s: fields 'force' and 'moment' are zero", fn);
         pl[k].live = k;
         kinds[k] = 2;
@@ -739,7 +757,7 @@ static int load_3d(lua_State *L, bl_model *m)
 static int model_load(lua_State *L)
 {
     static const char *const fields[] = {"dead", "live", "direction", "tilt", "axis", NULL};
-    static const char *const point_fields[] = {"block", "at", "force", "moment", NULL};
+    static const char *const point_fields[] = {"block", "at", "force", "moment", "weight", NULL};
     static const char *const dead_choices[] = {"self-weight", "none", NULL};
     static const char *const live_choices[] = {"horizontal", "none", NULL};
     bl_model *m = check_model(L, 1);
@@ -761,20 +779,21 @@ static int model_load(lua_State *L)
             if (m->blocks[pl[k].block].support)
                 fail(L, "%s: block %d is a support; loads on it do nothing", fn,
                            pl[k].block + 1);
+            pl[k].weight = weight_field(L, t, fn, k);
             pl[k].moment = number_field(L, t, fn, "moment", 0.0, ANY);
-            if (!field_given(L, t, "force") && !field_given(L, t, "moment"))
+            if (!field_given(L, t, "force") && !field_given(L, t, "moment") && !pl[k].weight)
                 fail(L, "%s: give field 'force' {fx, fy} (at 'at'), 'moment' m (a couple, counter-clockwise), "
-                     "or both", fn);
+                     "or both; or 'weight'", fn);
             const bl_block *bk = &m->blocks[pl[k].block];
             pl[k].at = bk->centroid;
             if (point_field(L, t, fn, "at", &pl[k].at)) {
                 double tol = 1e-9 * hypot(bk->box[2] - bk->box[0], bk->box[3] - bk->box[1]);
-                if (bl_polygon_depth(bk->v, bk->nv, pl[k].at) < -tol)
+                if (!pl[k].weight && bl_polygon_depth(bk->v, bk->nv, pl[k].at) < -tol)
                     fail(L, "%s: field 'at' (%g, %g) is outside block %d", fn, pl[k].at.x, pl[k].at.y,
                          pl[k].block + 1);
             }
             point_field(L, t, fn, "force", &pl[k].force);
-            if (bl_v2_norm(pl[k].force) == 0 && pl[k].moment == 0)
+            if (!pl[k].weight && bl_v2_norm(pl[k].force) == 0 && pl[k].moment == 0)
                 fail(L, "%s: fields 'force' and 'moment' are zero", fn);
             pl[k].live = k;
             kinds[k] = 2;

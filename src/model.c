@@ -268,20 +268,25 @@ int bl_model_check_point_load(const bl_model *m, const bl_point_load *l, bl_erro
 {
     const bl_block *b = &m->blocks[l->block];
     const char *kind = l->live ? "live" : "dead";
-    double f = m->dim == 3 ? bl_v3_norm(l->force3) : bl_v2_norm(l->force);
+    double f = l->weight > 0.0 ? l->weight : m->dim == 3 ? bl_v3_norm(l->force3) : bl_v2_norm(l->force);
     if (!(f <= BL_LOAD_RATIO * b->weight))
-        return bl_error_set(err, "load %s: field 'force' on block %d is %g, more than %g times the block's "
-                            "weight (%g): the solve would not hold it", kind, l->block + 1, f, BL_LOAD_RATIO,
-                            b->weight);
+        return bl_error_set(err, "load %s: field '%s' on block %d is %g, more than %g times the block's "
+                            "weight (%g): the solve would not hold it", kind,
+                            l->weight > 0.0 ? "weight" : "force", l->block + 1, f, BL_LOAD_RATIO, b->weight);
     const double *x = m->dim == 3 ? b->box3 : b->box;
     double size = m->dim == 3 ? sqrt((x[3] - x[0]) * (x[3] - x[0]) + (x[4] - x[1]) * (x[4] - x[1]) +
                                      (x[5] - x[2]) * (x[5] - x[2]))
                               : hypot(x[2] - x[0], x[3] - x[1]);
     double c = m->dim == 3 ? bl_v3_norm(l->moment3) : fabs(l->moment);
+    if (l->weight > 0.0) /* its moment about the centroid, whichever way it acts */
+        c = l->weight * (m->dim == 3 ? bl_v3_norm(bl_v3_sub(l->at3, b->centroid3))
+                                     : bl_v2_norm(bl_v2_sub(l->at, b->centroid)));
     if (!(c <= BL_LOAD_RATIO * b->weight * size))
-        return bl_error_set(err, "load %s: field 'moment' on block %d is %g, more than %g times the "
+        return bl_error_set(err, "load %s: field '%s' on block %d %s %g, more than %g times the "
                             "block's weight times its size (%g): the solve would not hold it", kind,
-                            l->block + 1, c, BL_LOAD_RATIO, b->weight * size);
+                            l->weight > 0.0 ? "at" : "moment", l->block + 1,
+                            l->weight > 0.0 ? "gives the weight a moment about its centroid of" : "is", c,
+                            BL_LOAD_RATIO, b->weight * size);
     return 0;
 }
 
@@ -332,6 +337,28 @@ bl_vec3 bl_model_gravity3(const bl_model *m)
     double c = cos(m->tilt), s = sin(m->tilt);
     return bl_v3_add(bl_v3_add(bl_v3_scale(g, c), bl_v3_scale(bl_v3_cross(k, g), s)),
                      bl_v3_scale(k, bl_v3_dot(k, g) * (1.0 - c)));
+}
+
+void bl_point_load_forces(const bl_model *m, const bl_point_load *l, bl_vec2 *dead, bl_vec2 *live)
+{
+    if (l->weight > 0.0) {
+        *dead = bl_v2_scale(bl_model_gravity(m), l->weight);
+        *live = m->live_weight ? bl_v2_scale(m->live_dir, l->weight) : bl_v2(0.0, 0.0);
+    } else {
+        *dead = l->live ? bl_v2(0.0, 0.0) : l->force;
+        *live = l->live ? l->force : bl_v2(0.0, 0.0);
+    }
+}
+
+void bl_point_load_forces3(const bl_model *m, const bl_point_load *l, bl_vec3 *dead, bl_vec3 *live)
+{
+    if (l->weight > 0.0) {
+        *dead = bl_v3_scale(bl_model_gravity3(m), l->weight);
+        *live = m->live_weight ? bl_v3_scale(m->live_dir3, l->weight) : bl_v3(0.0, 0.0, 0.0);
+    } else {
+        *dead = l->live ? bl_v3(0.0, 0.0, 0.0) : l->force3;
+        *live = l->live ? l->force3 : bl_v3(0.0, 0.0, 0.0);
+    }
 }
 
 int bl_model_uses_resultant(const bl_model *m, int *a, int *b)

@@ -76,12 +76,18 @@ typedef struct bl_joint_spec {
     bl_vec3 p3[BL_JOINT_POINTS];
 } bl_joint_spec;
 
+/* A point load on a free block: a force at a point with a couple, dead or
+ * live; or (weight > 0, dead, no force nor couple) a weight the block
+ * carries at 'at' (a floor, a fill): the force weight along gravity, and
+ * a mass, so that the weight-proportional live load also acts on it, at
+ * 'at' (bl_point_load_forces). */
 typedef struct bl_point_load {
     int block;
     bl_vec2 at, force;
     double moment;       /* 2D: a couple, counter-clockwise */
     int live;
     bl_vec3 at3, force3, moment3; /* 3D: point, force, and a couple */
+    double weight;
 } bl_point_load;
 
 typedef struct bl_model {
@@ -160,6 +166,13 @@ int bl_model_add_joint(bl_model *m, const bl_joint_spec *s, bl_error *err);
  * message.  Adding one (after that check) fails only out of memory. */
 int bl_model_check_point_load(const bl_model *m, const bl_point_load *l, bl_error *err);
 int bl_model_add_point_load(bl_model *m, const bl_point_load *l, bl_error *err);
+
+/* The forces of point load l at its point: *dead (times 1) and *live
+ * (times alpha), each zero where l has none.  A carried weight gives W
+ * along the tilted gravity, and W along the live direction while the
+ * weight-proportional live load is on. */
+void bl_point_load_forces(const bl_model *m, const bl_point_load *l, bl_vec2 *dead, bl_vec2 *live);
+void bl_point_load_forces3(const bl_model *m, const bl_point_load *l, bl_vec3 *dead, bl_vec3 *live);
 
 /* Removes every interface (freeing their 3D polygons). */
 void bl_model_clear_interfaces(bl_model *m);

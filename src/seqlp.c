@@ -830,11 +830,13 @@ static bl_system *rigid_system(const bl_model *m, const bl_cone *pyramid, bl_err
     return s;
 }
 
-/* Whether the live load is the self weight along gravity, and nothing else
- * loads the model. */
+/* Whether the live load is the self weight along gravity, and nothing but
+ * weights (the blocks' and carried ones) loads the model. */
 static int live_scales_dead(const bl_model *m)
 {
-    if (!m->self_weight || !m->live_weight || m->nloads > 0) return 0;
+    if (!m->self_weight || !m->live_weight) return 0;
+    for (int l = 0; l < m->nloads; l++)
+        if (!(m->loads[l].weight > 0.0)) return 0;
     if (m->dim == 3) return bl_v3_norm(bl_v3_sub(m->live_dir3, bl_model_gravity3(m))) < 1e-12;
     return bl_v2_norm(bl_v2_sub(m->live_dir, bl_model_gravity(m))) < 1e-12;
 }

@@ -401,4 +401,64 @@ do
          "3D: a distributed load on a wall of 6 courses = q on each top-course block, by hand")
 end
 
+-- Carried weights (load{ dead = { block, at, weight } }, distributed with
+-- weight = true): dead along gravity, and part of the weight-proportional
+-- live load at their point.  A pier b x h of weight W carrying P at the
+-- height H (on its axis) rocks about its toe at
+--   alpha = (W + P) b/2 / (W h/2 + P H)
+-- (below mu, so it does not slide); on a plane tilted by theta, where
+-- every load is a weight, alpha_h cos theta - sin theta.  In 2D and 3D.
+do
+  local b, h, W, mu = 0.5, 1.5, 0.75, 0.6
+  local function rock(P, H) return (W + P) * b / 2 / (W * h / 2 + P * H) end
+  local function pier(dim)
+    if dim == 3 then
+      model { dim = 3, mu = mu }
+      box { size = { b, 1, h }, at = { b / 2, 0.5, 0 } }
+      box { size = { 3 * b, 2, 0.3 }, at = { b / 2, 0.5, -0.3 }, support = true }
+    else
+      model { mu = mu }
+      block { vertices = { { 0, 0 }, { b, 0 }, { b, h }, { 0, h } } }
+      block { vertices = { { -b, -0.3 }, { 2 * b, -0.3 }, { 2 * b, 0 }, { -b, 0 } }, support = true }
+    end
+  end
+  local function at(dim, x, z) return dim == 3 and { x, 0.5, z } or { x, z } end
+  for _, dim in ipairs { 2, 3 } do
+    for _, c in ipairs { { 2, h }, { 1, 2.5 }, { 0.3, 0.9 } } do -- on top, above it (off the pier), inside
+      local P, H = c[1], c[2]
+      pier(dim)
+      load { dead = { block = 1, at = at(dim, b / 2, H), weight = P } }
+      T.near(solve {}.alpha, rock(P, H), 1e-9,
+             ("%dD: a pier carrying %g at height %g rocks at (W + P) b/2 / (W h/2 + P H)"):format(dim, P, H))
+      load { tilt = 8 }
+      local r = solve {}
+      T.near(r.alpha, rock(P, H) * math.cos(math.rad(8)) - math.sin(math.rad(8)), 1e-9,
+             ("%dD: the same tilted by 8 degrees: alpha_h cos 8 - sin 8 (the weight turns too)"):format(dim))
+    end
+    -- q = 4 over the whole top as a carried weight: P = q b (2D, per length
+    -- across the model's unit thickness; 3D, per area over the 1 deep top: q b)
+    pier(dim)
+    load { dead = { over = dim == 3 and { { -1, -1 }, { 1, 2 } } or { -1, 1 }, q = 4, weight = true } }
+    T.near(solve {}.alpha, rock(4 * b, h), 1e-9,
+           ("%dD: q = 4 over the top as a carried weight: the weight q b on top"):format(dim))
+    -- the live load off: the weight is a dead load and nothing else
+    pier(dim)
+    load { dead = { block = 1, at = at(dim, b / 2, 2.5), weight = 2 } }
+    load { live = "none" }
+    load { live = { block = 1, at = at(dim, b / 2, h), force = dim == 3 and { 1, 0, 0 } or { 1, 0 } } }
+    T.near(solve {}.alpha, (W + 2) * b / 2 / h, 1e-9,
+           ("%dD: live load off: the carried weight only holds the pier, (W + P) b/2 / h"):format(dim))
+    -- a weight hung past the toe, at x: the pier stands under its dead
+    -- load alone while P (x - b) < W b/2
+    for _, x in ipairs { 0.65, 0.72 } do
+      pier(dim)
+      load { dead = { block = 1, at = at(dim, x, h), weight = 1 } }
+      local r = solve {}
+      T.eq(r.stands, x - b < W * b / 2,
+           ("%dD: a weight of 1 hung at x = %g: the pier %s under its dead load"):format(dim, x,
+             x - b < W * b / 2 and "stands" or "does not stand"))
+    end
+  end
+end
+
 T.done()
