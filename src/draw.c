@@ -10,7 +10,6 @@
 
 #define DEFAULT_WIDTH 1000
 #define SHOW_FRACTION 0.08  /* largest drawn displacement / model size */
-#define STILL_FRACTION 0.01 /* blocks moving less than this share look still */
 #define THIN_BLOCK 2.0      /* px: blocks thinner than this on average get no outlines */
 #define MAX_ASPECT 2.0      /* a tall model is shrunk rather than drawn taller */
 #define PNG_MAX_SIDE 32767  /* cairo's limit for image surfaces */
@@ -73,9 +72,14 @@ static int moves(const pic *P, int b)
 /* Speed of block b at p in the (linear) velocity field u describes. */
 static double speed(const bl_solution *s, int b, bl_vec2 p)
 {
-    const double *u = s->u + 3 * b;
-    bl_vec2 r = bl_v2_sub(p, s->model->blocks[b].centroid);
-    return hypot(u[0] - u[2] * r.y, u[1] + u[2] * r.x);
+    return bl_v3_norm(bl_solution_velocity(s, b, bl_v3(p.x, p.y, 0.0)));
+}
+
+/* Whether free block b is drawn still (BL_STILL_FRACTION): always where
+ * no mechanism is drawn. */
+static int still(const pic *P, int b)
+{
+    return !(P->k > 0.0) || !(bl_solution_block_speed(P->s, b) >= BL_STILL_FRACTION * P->maxd);
 }
 
 /* Rigid motion of block b over "time" k under its constant velocity field:
@@ -267,14 +271,6 @@ static double legend(cairo_t *cr, const pic *P, double x, double y, int draw)
     return x - x_start;
 }
 
-/* 3D: the velocity of block b at p, v + omega x (p - g). */
-static bl_vec3 velocity3(const bl_solution *s, int b, bl_vec3 p)
-{
-    const double *u = s->u + 6 * b;
-    bl_vec3 r = bl_v3_sub(p, s->model->blocks[b].centroid3);
-    return bl_v3_add(bl_v3(u[0], u[1], u[2]), bl_v3_cross(bl_v3(u[3], u[4], u[5]), r));
-}
-
 /* Largest vertex speed of the free blocks, 0 when u holds a NaN or an
  * infinity: such a mechanism cannot be drawn, the model still can. */
 static double max_speed(const bl_solution *s)
@@ -282,15 +278,10 @@ static double max_speed(const bl_solution *s)
     const bl_model *m = s->model;
     double maxd = 0.0;
     for (int b = 0; b < m->nblocks; b++) {
-        const bl_block *B = &m->blocks[b];
-        if (B->support) continue;
-        int nv = m->dim == 3 ? B->solid.nv : B->nv;
-        for (int i = 0; i < nv; i++) {
-            double d = m->dim == 3 ? bl_v3_norm(velocity3(s, b, B->solid.v[i]))
-                                   : speed(s, b, B->v[i]);
-            if (!isfinite(d)) return 0.0;
-            maxd = fmax(maxd, d);
-        }
+        if (m->blocks[b].support) continue;
+        double d = bl_solution_block_speed(s, b);
+        if (!isfinite(d)) return 0.0;
+        maxd = fmax(maxd, d);
     }
     return maxd;
 }
@@ -451,8 +442,8 @@ static int anchor3(const pic *P, const bl_interface *f)
 {
     double da = 0.0, db = 0.0;
     for (int e = 0; e < f->np; e++) {
-        if (moves(P, f->a)) da += bl_v3_norm(velocity3(P->s, f->a, f->poly[e]));
-        if (moves(P, f->b)) db += bl_v3_norm(velocity3(P->s, f->b, f->poly[e]));
+        if (moves(P, f->a)) da += bl_v3_norm(bl_solution_velocity(P->s, f->a, f->poly[e]));
+        if (moves(P, f->b)) db += bl_v3_norm(bl_solution_velocity(P->s, f->b, f->poly[e]));
     }
     return db < da ? f->b : f->a;
 }
@@ -463,7 +454,7 @@ static int anchor3(const pic *P, const bl_interface *f)
  * and slides, over blocks drawn still). */
 static int visible_motion(const pic *P, int i)
 {
-    return P->s->speed[i] >= STILL_FRACTION * P->s->speed_max;
+    return P->s->speed[i] >= BL_STILL_FRACTION * P->s->speed_max;
 }
 
 /* Whether joint i gets a 3D marker: sliding, separating or rocking. */
@@ -691,11 +682,7 @@ static void draw3(cairo_t *cr, const pic *P)
         }
         const bl_block *B = &m->blocks[b];
         const bl_polyhedron *S = &B->solid;
-        double d = 0.0;
-        for (int i = 0; P->k > 0.0 && !B->support && i < S->nv; i++)
-            d = fmax(d, bl_v3_norm(velocity3(P->s, b, S->v[i])));
-        rgb base = B->support ? SUPPORT_FILL
-                   : d >= STILL_FRACTION * P->maxd && P->k > 0.0 ? MOVING : STILL;
+        rgb base = B->support ? SUPPORT_FILL : still(P, b) ? STILL : MOVING;
         double shade = 0.55 + 0.45 * F[t].light;
         cairo_new_path(cr);
         for (int i = S->fs[k]; i < S->fs[k + 1]; i++) {
@@ -794,9 +781,7 @@ static void draw(cairo_t *cr, const pic *P)
         for (int b = 0; b < m->nblocks; b++) {
             const bl_block *B = &m->blocks[b];
             if (B->support) continue;
-            double d = 0.0;
-            for (int i = 0; P->k > 0.0 && i < B->nv; i++) d = fmax(d, speed(s, b, B->v[i]));
-            rgb fill = d >= STILL_FRACTION * P->maxd && P->k > 0.0 ? MOVING : STILL;
+            rgb fill = still(P, b) ? STILL : MOVING;
             block_path(cr, P, b, 1);
             /* slightly see-through, so the outlines of the original
              * position stay visible under the moved blocks */

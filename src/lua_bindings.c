@@ -1129,6 +1129,16 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
         lua_setfield(L, -2, bl_state_name((bl_state)st));
     }
     lua_setfield(L, -2, "states");
+    bl_participation pp;
+    if (bl_solution_participation(s, &pp) == 0) {
+        lua_createtable(L, 0, 5);
+        set_number(L, "chain", pp.chain);
+        set_integer(L, "blocks", pp.blocks);
+        set_number(L, "participating", pp.participating);
+        set_number(L, "ratio", pp.ratio);
+        set_number(L, "acceleration", pp.acceleration);
+        lua_setfield(L, -2, "participation");
+    }
     push_thrust(L, s);
 }
 

@@ -134,16 +134,74 @@ int bl_solution_keep(bl_solution *s, const double *x, int nx, const double *y, i
     return 0;
 }
 
+bl_vec3 bl_solution_velocity(const bl_solution *s, int b, bl_vec3 p)
+{
+    const bl_block *B = &s->model->blocks[b];
+    if (s->model->dim == 3) {
+        const double *u = s->u + 6 * b;
+        bl_vec3 r = bl_v3_sub(p, B->centroid3);
+        return bl_v3_add(bl_v3(u[0], u[1], u[2]), bl_v3_cross(bl_v3(u[3], u[4], u[5]), r));
+    }
+    const double *u = s->u + 3 * b;
+    return bl_v3(u[0] - u[2] * (p.y - B->centroid.y), u[1] + u[2] * (p.x - B->centroid.x), 0.0);
+}
+
 bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec2 p)
 {
-    bl_vec2 v[2];
-    int blk[2] = {a, b};
-    for (int i = 0; i < 2; i++) {
-        const double *u = s->u + 3 * blk[i];
-        bl_vec2 r = bl_v2_sub(p, s->model->blocks[blk[i]].centroid);
-        v[i] = bl_v2(u[0] - u[2] * r.y, u[1] + u[2] * r.x);
+    bl_vec3 q = bl_v3(p.x, p.y, 0.0), d = bl_v3_sub(bl_solution_velocity(s, b, q), bl_solution_velocity(s, a, q));
+    return bl_v2(d.x, d.y);
+}
+
+double bl_solution_block_speed(const bl_solution *s, int b)
+{
+    const bl_block *B = &s->model->blocks[b];
+    double d = 0.0;
+    int nv = s->model->dim == 3 ? B->solid.nv : B->nv;
+    for (int i = 0; i < nv; i++) {
+        bl_vec3 p = s->model->dim == 3 ? B->solid.v[i] : bl_v3(B->v[i].x, B->v[i].y, 0.0);
+        d = fmax(d, bl_v3_norm(bl_solution_velocity(s, b, p)));
     }
-    return bl_v2_sub(v[1], v[0]);
+    return d;
+}
+
+int bl_solution_participation(const bl_solution *s, bl_participation *p)
+{
+    const bl_model *m = s->model;
+    memset(p, 0, sizeof *p);
+    if (!s->has_mechanism || !s->u || !(s->alpha >= 0.0) || !m->live_weight) return -1;
+    for (int l = 0; l < m->nloads; l++)
+        if (m->loads[l].live) return -1;
+    bl_vec3 d = m->dim == 3 ? m->live_dir3 : bl_v3(m->live_dir.x, m->live_dir.y, 0.0);
+    int nb = m->nblocks;
+    double *speed = malloc((size_t)nb * sizeof *speed), fastest = 0.0;
+    if (!speed) return -1;
+    for (int b = 0; b < nb; b++) {
+        speed[b] = m->blocks[b].support ? 0.0 : bl_solution_block_speed(s, b);
+        fastest = fmax(fastest, speed[b]);
+    }
+    /* each mass: the carried weights at their points (l < nloads), and
+     * each block's own at its centroid (l = nloads + b), on moving blocks */
+    double work = 0.0, square = 0.0;
+    for (int l = 0; l < m->nloads + nb; l++) {
+        int own = l >= m->nloads, b = own ? l - m->nloads : m->loads[l].block;
+        const bl_block *B = &m->blocks[b];
+        if (B->support || !(speed[b] >= BL_STILL_FRACTION * fastest)) continue;
+        if (!own && !(m->loads[l].weight > 0.0)) continue;
+        double P = own ? B->weight : m->loads[l].weight;
+        bl_vec3 at = own ? (m->dim == 3 ? B->centroid3 : bl_v3(B->centroid.x, B->centroid.y, 0.0))
+                         : (m->dim == 3 ? m->loads[l].at3 : bl_v3(m->loads[l].at.x, m->loads[l].at.y, 0.0));
+        double v = bl_v3_dot(bl_solution_velocity(s, b, at), d);
+        p->blocks += own;
+        p->chain += P;
+        work += P * v;
+        square += P * v * v;
+    }
+    free(speed);
+    if (!(fastest > 0.0) || !(square > 0.0) || !isfinite(square)) return -1;
+    p->participating = work * work / square;
+    p->ratio = p->participating / p->chain;
+    p->acceleration = s->alpha / p->ratio;
+    return 0;
 }
 
 /* Relative threshold below which a relative velocity counts as zero. */
@@ -152,14 +210,7 @@ bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec
 /* Relative velocity of b with respect to a at the 3D point p. */
 static bl_vec3 relative3(const bl_solution *s, int a, int b, bl_vec3 p)
 {
-    bl_vec3 v[2];
-    int blk[2] = {a, b};
-    for (int i = 0; i < 2; i++) {
-        const double *u = s->u + 6 * blk[i];
-        bl_vec3 r = bl_v3_sub(p, s->model->blocks[blk[i]].centroid3);
-        v[i] = bl_v3_add(bl_v3(u[0], u[1], u[2]), bl_v3_cross(bl_v3(u[3], u[4], u[5]), r));
-    }
-    return bl_v3_sub(v[1], v[0]);
+    return bl_v3_sub(bl_solution_velocity(s, b, p), bl_solution_velocity(s, a, p));
 }
 
 /* 3D states, from the relative velocity at every vertex of the contact

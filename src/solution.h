@@ -169,9 +169,36 @@ bl_status bl_status_of_lp(bl_lp_status st);
  * the structure cannot stand under its dead load alone, else BL_OPTIMAL. */
 void bl_solution_answer_status(bl_solution *s);
 
+/* The velocity of block b at point p in the mechanism u: v + omega x
+ * (p - g) (2D: p.z is ignored and the velocity's z is 0). */
+bl_vec3 bl_solution_velocity(const bl_solution *s, int b, bl_vec3 p);
+
 /* Relative velocity of block b with respect to block a at point p,
  * from the mechanism u (either block may be a support). */
 bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec2 p);
+
+/* The largest speed of a vertex of block b in the mechanism u. */
+double bl_solution_block_speed(const bl_solution *s, int b);
+
+/* A free block whose fastest vertex moves at less than this share of the
+ * fastest block's is still: drawn pale, and outside the moving chain of
+ * bl_solution_participation. */
+#define BL_STILL_FRACTION 0.01
+
+/* The mechanism's participating weight under the weight-proportional live
+ * load along d (doc/theory.md, T9): with P_i the weights of the free
+ * blocks at their centroids and the carried weights at their points, and
+ * d_i = u(p_i) . d, participating = (sum P_i d_i)^2 / sum P_i d_i^2; chain
+ * the sum of P_i over the moving blocks (BL_STILL_FRACTION); ratio =
+ * participating / chain; acceleration = alpha / ratio. */
+typedef struct bl_participation {
+    double chain, participating, ratio, acceleration;
+    int blocks; /* the moving blocks */
+} bl_participation;
+
+/* 0 with *p filled; -1 where it is not defined: no mechanism, alpha < 0,
+ * a live load other than the weights', or no motion along d. */
+int bl_solution_participation(const bl_solution *s, bl_participation *p);
 
 /* Classifies every interface from the mechanism (doc/theory.md, "states"):
  * fills state and hinge. */

@@ -461,4 +461,52 @@ do
   end
 end
 
+-- The participating weight of the mechanism (r.participation, theory T9):
+-- with the weights P_i at their points and d_i their velocities along the
+-- live load, M* = (sum P d)^2 / sum P d^2 over the moving blocks, e* =
+-- M* / sum P.  Rocking about the toe, d_i is proportional to the height
+-- y_i of the point: a column of k equal blocks rocking as one has y_i =
+-- (i - 1/2) h and e* = 3 k^2 / (4 k^2 - 1); a pier of weight W carrying P
+-- at height H, (W h/2 + P H)^2 / (W h^2/4 + P H^2) / (W + P); a block
+-- sliding alone over a still one, e* = 1 with that block's weight.
+for _, k in ipairs { 3, 5, 8 } do -- b/H < mu: rocking
+  column(0.5, 0.3, k, { mu = 0.65 })
+  local r = solve {}
+  local p = r.participation
+  T.near(p.ratio, 3 * k * k / (4 * k * k - 1), 1e-9,
+         ("column of %d blocks rocking as one: e* = 3 k^2 / (4 k^2 - 1)"):format(k))
+  T.near(p.chain, k * 0.15, 1e-12, ("column of %d blocks: the chain weighs k W"):format(k))
+  T.near(p.acceleration, r.alpha / p.ratio, 1e-12, ("column of %d blocks: acceleration = alpha / e*"):format(k))
+end
+for _, dim in ipairs { 2, 3 } do
+  local b, h, W, P, H = 0.5, 1.5, 0.75, 2, 2.5
+  if dim == 3 then
+    model { dim = 3, mu = 0.6 }
+    box { size = { b, 1, h }, at = { b / 2, 0.5, 0 } }
+    box { size = { 3 * b, 2, 0.3 }, at = { b / 2, 0.5, -0.3 }, support = true }
+    load { dead = { block = 1, at = { b / 2, 0.5, H }, weight = P } }
+  else
+    model { mu = 0.6 }
+    block { vertices = { { 0, 0 }, { b, 0 }, { b, h }, { 0, h } } }
+    block { vertices = { { -b, -0.3 }, { 2 * b, -0.3 }, { 2 * b, 0 }, { -b, 0 } }, support = true }
+    load { dead = { block = 1, at = { b / 2, H }, weight = P } }
+  end
+  local p = solve {}.participation
+  local Ms = (W * h / 2 + P * H) ^ 2 / (W * h * h / 4 + P * H * H)
+  T.near(p.participating, Ms, 1e-9, ("%dD: a pier carrying P at H: M* = (W h/2 + P H)^2 / (W h^2/4 + P H^2)"):format(dim))
+  T.near(p.ratio, Ms / (W + P), 1e-9, ("%dD: ... e* = M* / (W + P)"):format(dim))
+end
+do
+  column(0.5, 0.3, 2, { mu = 0.65 })
+  interface { 1, 2, mu = 0.1 }
+  local r = solve {}
+  T.near(r.alpha, 0.1, 1e-9, "top block sliding off the bottom one at mu = 0.1")
+  T.ok(r.participation.blocks == 1 and math.abs(r.participation.chain - 0.15) < 1e-12
+       and math.abs(r.participation.ratio - 1) < 1e-9,
+       "... the still bottom block is not in the chain: e* = 1 with the top block's weight",
+       ("%d blocks, chain %.6g, e* %.9g"):format(r.participation.blocks, r.participation.chain, r.participation.ratio))
+  load { live = { block = 2, force = { 1, 0 } } }
+  T.eq(solve {}.participation, nil, "a live point load beside the weights': no participation")
+end
+
 T.done()
