@@ -159,12 +159,20 @@ return function(M, load_ratio)
             fail(("field 'fill': the fill over voussoir %d weighs %.6g, more than %g times the voussoir (%.6g): "
                   .. "the solve would not hold it"):format(i + 1, f, load_ratio, own))
           end
-          loads[#loads + 1] = { block = id, weight = f,
-                                at = solid and { x, length * (k - 0.5) / segments, y } or { x, y } }
+          loads[#loads + 1] = { voussoir = i + 1, { block = id, weight = f,
+                                at = solid and { x, length * (k - 0.5) / segments, y } or { x, y } } }
         end
       end
     end
-    for _, l in ipairs(loads) do M.load { dead = l } end
+    for _, l in ipairs(loads) do
+      -- (the core refuses a weight whose moment it would not hold: say so
+      -- of the fill, the field the user gave)
+      local ok, why = pcall(M.load, { dead = l[1] })
+      if not ok then
+        fail(("field 'fill': the fill over voussoir %d lies too high above it for the solve (%s): lower 'level'")
+          :format(l.voussoir, tostring(why):match("gives the weight (.-): the solve") or tostring(why)))
+      end
+    end
     -- Springings continue each end joint along the arch's tangent, away from it.
     local springs = {}
     for _, e in ipairs { { a0, 1 }, { a0 - 2 * half, -1 } } do

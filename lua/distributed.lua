@@ -9,8 +9,8 @@
 -- x̄ = ∫ x q dx / ∫ q dx, acting on its top at x̄.  Parts that land on
 -- supports are carried by them.  With weight = true (dead loads only) q is
 -- the weight of what the blocks carry (a floor): each resultant becomes a
--- carried weight at the same point, on which the weight-proportional live
--- load acts too.
+-- carried weight at the share's centre of mass on the top, (x̄, ∫ y q dx /
+-- ∫ q dx), on which the weight-proportional live load acts too.
 local M = {}
 local show = require("blocklim.report").show
 
@@ -296,7 +296,7 @@ local function point_loads_3d(m, n, t, fail, ratio)
             local b = best.block
             if not b.support then
               -- ∫ q, ∫ x q, ∫ y q over the trapezoid (Gauss, 3 x 3 per piece)
-              local F, Fx, Fy = 0, 0, 0
+              local F, Fx, Fy, Fz = 0, 0, 0, 0
               local function lo(x) return l.side and l.y or y_at(l.e, x) end
               local function hi(x) return u.side and u.y or y_at(u.e, x) end
               for px = 0, pieces - 1 do
@@ -310,18 +310,19 @@ local function point_loads_3d(m, n, t, fail, ratio)
                     local hy, my = (qc - qa) / 2, (qa + qc) / 2
                     for h = 1, 3 do
                       local y = my + hy * GX[h]
-                      local w = GW[g] * GW[h] * hx * hy * q_at(q, fail, x, y, height(best, x, y))
-                      F, Fx, Fy = F + w, Fx + w * x, Fy + w * y
+                      local z = height(best, x, y)
+                      local w = GW[g] * GW[h] * hx * hy * q_at(q, fail, x, y, z)
+                      F, Fx, Fy, Fz = F + w, Fx + w * x, Fy + w * y, Fz + w * z
                     end
                   end
                 end
               end
               local e = share[b.id]
               if not e then
-                e = { b, 0, 0, 0 }
+                e = { b, 0, 0, 0, 0 }
                 share[b.id], order[#order + 1] = e, b.id
               end
-              e[2], e[3], e[4] = e[2] + F, e[3] + Fx, e[4] + Fy
+              e[2], e[3], e[4], e[5] = e[2] + F, e[3] + Fx, e[4] + Fy, e[5] + Fz
               if F > 0 and (not b.cell or F > b.cell.F) then -- the block's largest part: a point on its top
                 local x, y = Fx / F, Fy / F
                 b.cell = { F = F, at = { x, y, height(best, x, y) } }
@@ -333,16 +334,16 @@ local function point_loads_3d(m, n, t, fail, ratio)
     end
   end
 
-  return point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx, Fy)
+  return point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx, Fy, Fz)
     local x, y, z = Fx / F, Fy / F, nil
+    -- a carried weight's mass is where the load lies: at its q-weighted
+    -- height too (on a stepped top, not the top's height at (x, y))
+    if t.weight then return { block = b.id, at = { x, y, Fz / F }, force = { 0, 0, -F } } end
     for _, f in ipairs(b.top) do
       if inside(f.outline, x, y, 1, 2) then z = math.max(z or -math.huge, height(f, x, y)) end
     end
     if z then return { block = b.id, at = { x, y, z }, force = { 0, 0, -F } } end
     local c = b.cell.at
-    -- a carried weight may act off its block: on the resultant's line, at
-    -- the height of the block's largest part
-    if t.weight then return { block = b.id, at = { x, y, c[3] }, force = { 0, 0, -F } } end
     return { block = b.id, at = c, force = { 0, 0, -F }, moment = { -F * (y - c[2]), F * (x - c[1]), 0 } }
   end)
 end
@@ -376,21 +377,22 @@ local function point_loads_2d(m, n, t, fail, ratio)
   table.sort(xs)
 
   -- between two neighbouring vertex abscissae each block's top is one edge
-  local share = {} -- per block: its blocks entry, ∫ q dx, ∫ x q dx
+  local share = {} -- per block: its blocks entry, ∫ q dx, ∫ x q dx, ∫ y q dx
   local order = {}
   local function integrate(a, c, y0, s)
     local pieces = type(t.q) == "number" and 1 or PIECES -- a number: q is constant
-    local F, Fx = 0, 0
+    local F, Fx, Fy = 0, 0, 0
     for j = 0, pieces - 1 do
       local pa, pc = a + (c - a) * j / pieces, a + (c - a) * (j + 1) / pieces
       local h, mid = (pc - pa) / 2, (pa + pc) / 2
       for g = 1, 3 do
         local x = mid + h * GX[g]
-        local v = q_at(q, fail, x, y0 + s * (x - a))
-        F, Fx = F + GW[g] * h * v, Fx + GW[g] * h * v * x
+        local y = y0 + s * (x - a)
+        local w = GW[g] * h * q_at(q, fail, x, y)
+        F, Fx, Fy = F + w, Fx + w * x, Fy + w * y
       end
     end
-    return F, Fx
+    return F, Fx, Fy
   end
   local landed = false
   for i = 1, #xs - 1 do
@@ -404,22 +406,23 @@ local function point_loads_2d(m, n, t, fail, ratio)
       if best then
         landed = true
         if not best.support then
-          local F, Fx = integrate(a, c, by + bs * (a - xm), bs)
+          local F, Fx, Fy = integrate(a, c, by + bs * (a - xm), bs)
           local e = share[best.id]
           if not e then
-            e = { best, 0, 0 }
+            e = { best, 0, 0, 0 }
             share[best.id] = e
             order[#order + 1] = best.id
           end
-          e[2], e[3] = e[2] + F, e[3] + Fx
+          e[2], e[3], e[4] = e[2] + F, e[3] + Fx, e[4] + Fy
         end
       end
     end
   end
   local region = ("{%.6g, %.6g}"):format(x0, x1)
-  return point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx)
+  return point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx, Fy)
     local x = Fx / F
-    return { block = b.id, at = { x, (top(b, x)) }, force = { 0, -F } }
+    -- a carried weight's mass lies at the load's q-weighted height
+    return { block = b.id, at = { x, t.weight and Fy / F or (top(b, x)) }, force = { 0, -F } }
   end)
 end
 

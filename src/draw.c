@@ -12,6 +12,7 @@
 #define SHOW_FRACTION 0.08  /* largest drawn displacement / model size */
 #define THIN_BLOCK 2.0      /* px: blocks thinner than this on average get no outlines */
 #define MAX_ASPECT 2.0      /* a tall model is shrunk rather than drawn taller */
+#define ARROW 0.06          /* a load's arrow, of the canvas's width */
 #define PNG_MAX_SIDE 32767  /* cairo's limit for image surfaces */
 
 #ifndef M_PI
@@ -294,6 +295,25 @@ static void grow(double box[4], bl_vec2 q)
     box[3] = fmax(box[3], q.y);
 }
 
+/* Point load pl in the picture's plane: where it acts, on its block as
+ * moved (move) or not, and the unit direction of its arrow, along its
+ * force (a carried weight's along gravity); zero for a couple alone or a
+ * force along the line of sight. */
+static void load_point(const pic *P, const bl_point_load *pl, int move, bl_vec2 *at, bl_vec2 *dir)
+{
+    int w = pl->weight > 0.0;
+    if (P->dim == 3) {
+        bl_vec3 p = move ? moved3(P, pl->block, pl->at3) : pl->at3;
+        *at = project(P, p);
+        *dir = bl_v2_sub(project(P, bl_v3_add(p, bl_v3_unit(w ? bl_model_gravity3(P->m) : pl->force3))), *at);
+    } else {
+        *at = move ? moved(P, pl->block, pl->at) : pl->at;
+        *dir = bl_v2_unit(w ? bl_model_gravity(P->m) : pl->force);
+    }
+    double n = bl_v2_norm(*dir);
+    *dir = n > 1e-9 ? bl_v2_scale(*dir, 1.0 / n) : bl_v2(0.0, 0.0);
+}
+
 /* Scale of the mechanism and bounding box of what will be drawn. */
 static void extent(pic *P, double box[4])
 {
@@ -313,14 +333,19 @@ static void extent(pic *P, double box[4])
         for (int i = 0; i < B->nv; i++)
             for (int pass = 0; pass < 2; pass++) grow(box, pass ? moved(P, b, B->v[i]) : B->v[i]);
     }
-    /* carried weights may lie off their blocks (a fill's centroids) */
-    for (int l = 0; l < m->nloads; l++) {
-        const bl_point_load *pl = &m->loads[l];
-        if (!(pl->weight > 0.0)) continue;
-        for (int pass = 0; pass < 2; pass++)
-            grow(box, m->dim == 3 ? project(P, pass ? moved3(P, pl->block, pl->at3) : pl->at3)
-                                  : pass ? moved(P, pl->block, pl->at) : pl->at);
-    }
+    /* the loads' points (a carried weight's may lie off its block: a
+     * fill's centroid, or the dead-load check's forces that were weights)
+     * and their arrows' tails, ARROW of the canvas's width, in model
+     * units at the scale the blocks will take (the drawing is 0.92 of the
+     * canvas's width, between its margins) */
+    double room = ARROW / 0.92 * fmax(box[2] - box[0], (box[3] - box[1]) / MAX_ASPECT);
+    for (int l = 0; l < m->nloads; l++)
+        for (int pass = 0; pass < 2; pass++) {
+            bl_vec2 at, dir;
+            load_point(P, &m->loads[l], pass, &at, &dir);
+            grow(box, at);
+            grow(box, bl_v2_sub(at, bl_v2_scale(dir, room)));
+        }
 }
 
 /* Fixes the canvas size and where everything goes. */
@@ -704,27 +729,18 @@ static void draw3(cairo_t *cr, const pic *P)
 
 /* Every point load as an arrow ending where it acts (on its block as
  * moved), along its force (a carried weight along gravity), of one length
- * (not to scale): dead grey, live purple.  A couple alone, or a force along the line of sight, has none. */
+ * (ARROW of the canvas's width, not to scale): dead grey, live purple.  A couple alone, or a force along the line of sight, has none. */
 static void load_arrows(cairo_t *cr, const pic *P)
 {
     const bl_model *m = P->m;
-    double len = 0.06 * P->w, head = fmax(3.0, 5.0 * P->mark);
+    double len = ARROW * P->w, head = fmax(3.0, 5.0 * P->mark);
     for (int l = 0; l < m->nloads; l++) {
         const bl_point_load *pl = &m->loads[l];
-        int w = pl->weight > 0.0; /* a carried weight: along gravity */
-        bl_vec2 at, ahead;
-        if (P->dim == 3) {
-            bl_vec3 p = moved3(P, pl->block, pl->at3);
-            at = dev(P, project(P, p));
-            ahead = dev(P, project(P, bl_v3_add(p, bl_v3_unit(w ? bl_model_gravity3(m) : pl->force3))));
-        } else {
-            at = dev(P, moved(P, pl->block, pl->at));
-            ahead = dev(P, bl_v2_add(moved(P, pl->block, pl->at), bl_v2_unit(w ? bl_model_gravity(m) : pl->force)));
-        }
-        bl_vec2 d = bl_v2_sub(ahead, at);
-        double n = bl_v2_norm(d);
-        if (!(n > 1e-9 * P->sc)) continue;
-        d = bl_v2_scale(d, 1.0 / n);
+        bl_vec2 p, d;
+        load_point(P, pl, 1, &p, &d);
+        if (d.x == 0.0 && d.y == 0.0) continue;
+        bl_vec2 at = dev(P, p);
+        d = bl_v2(d.x, -d.y); /* the canvas's y runs down */
         /* shorter where the canvas ends (a load on a wall's top) */
         double fit = len;
         if (d.x > 0.0) fit = fmin(fit, at.x / d.x);

@@ -253,7 +253,9 @@ T.eq(message(function() arch { span = 2, thickness = 0.2, n = 5, fill = { level 
      .. "the solve would not hold it", "arch{ fill = { level = 1e308 } }: the overflow named")
 T.eq(message(function() arch { span = 2, thickness = 0.2, n = 5, fill = { level = 3, density = 1e13 } } end):match("^(.-weighs)"),
      "arch: field 'fill': the fill over voussoir 1 weighs", "arch{ fill } of 1e12 times a voussoir: fill named")
-T.eq(stats().blocks, 0, "the refused arch with fill left no blocks")
+T.eq(message(function() arch { radius = 1, thickness = 0.15, n = 9, fill = { level = 1e6, density = 1 } } end):match("^(.-lies too high)"),
+     "arch: field 'fill': the fill over voussoir 1 lies too high", "arch{ fill } whose weights' moments are too large: fill named")
+T.eq(stats().blocks, 0, "the refused arches with fill left no blocks")
 -- A declared 3D joint that gives a corner twice (it was accepted): refused,
 -- naming both points, and the detected joint stays (alpha = mu: sliding).
 model { dim = 3, mu = 0.6 }

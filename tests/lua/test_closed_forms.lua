@@ -441,6 +441,23 @@ do
     load { dead = { over = dim == 3 and { { -1, -1 }, { 1, 2 } } or { -1, 1 }, q = 4, weight = true } }
     T.near(solve {}.alpha, rock(4 * b, h), 1e-9,
            ("%dD: q = 4 over the top as a carried weight: the weight q b on top"):format(dim))
+    -- a stepped top (a 1 x 1 block with a 0.4 x 1 one on its left, one
+    -- piece): q = 2 over it as a weight lies at x = 0.5 and at the height
+    -- of its parts, (0.8 x 2 + 1.2 x 1) / 2 = 1.4, not at the top over x
+    if dim == 3 then
+      model { dim = 3, mu = 0.8 }
+      extrude { polygon = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0.4, 1 }, { 0.4, 2 }, { 0, 2 } }, axis = "y", from = 0, to = 1 }
+      box { size = { 3, 3, 0.3 }, at = { 0.5, 0.5, -0.3 }, support = true }
+    else
+      model { mu = 0.8 }
+      block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0.4, 1 }, { 0.4, 2 }, { 0, 2 } } }
+      block { vertices = { { -1, -0.3 }, { 2, -0.3 }, { 2, 0 }, { -1, 0 } }, support = true }
+    end
+    load { dead = { over = dim == 3 and { { 0, 0 }, { 1, 1 } } or { 0, 1 }, q = 2, weight = true } }
+    local Ws, xs, ys = 1.4, (1 * 0.5 + 0.4 * 0.2) / 1.4, (1 * 0.5 + 0.4 * 1.5) / 1.4
+    local Q, xq, yq = 2, (0.8 * 0.2 + 1.2 * 0.7) / 2, (0.8 * 2 + 1.2 * 1) / 2
+    T.near(solve {}.alpha, (Ws * (1 - xs) + Q * (1 - xq)) / (Ws * ys + Q * yq), 1e-9,
+           ("%dD: q over a stepped top as a weight: its mass at the height of its parts"):format(dim))
     -- the live load off: the weight is a dead load and nothing else
     pier(dim)
     load { dead = { block = 1, at = at(dim, b / 2, 2.5), weight = 2 } }
