@@ -269,7 +269,7 @@ function Velocity.__tostring(u)
     return ("v = (%.4g, %.4g, %.4g), omega = (%.4g, %.4g, %.4g)"):format(u[1] + 0.0, u[2] + 0.0,
       u[3] + 0.0, u[4] + 0.0, u[5] + 0.0, u[6] + 0.0)
   end
-  return ("vx = %.4g, vy = %.4g, omega = %.4g"):format(u[1], u[2], u[3])
+  return ("vx = %.4g, vy = %.4g, omega = %.4g"):format(u[1] + 0.0, u[2] + 0.0, u[3] + 0.0)
 end
 
 -- Lists of block numbers made by a generator print as ranges.
@@ -285,6 +285,77 @@ function Blocks.__tostring(list)
   return ("%d block%s: %s"):format(#list, plural(#list), table.concat(parts, ", "))
 end
 function report.blocks(list) return setmetatable(list, Blocks) end
+
+-- How the prompt shows a value: a table with no __tostring of its own as
+-- its fields, the list's first in order, then the other keys sorted; a
+-- field that is itself a small table (at most 4 fields, of numbers,
+-- strings or such tables) inline, as { force = { 0.5, -1 }, moment = 2 },
+-- any other as {...} with its size; on one line up to 100 characters,
+-- else a field a line, at most MAX_FIELDS of them.
+local MAX_FIELDS = 20
+local function has_tostring(v)
+  local mt = getmetatable(v)
+  return type(mt) == "table" and mt.__tostring ~= nil
+end
+local function keys_of(t)
+  local n, keys, rest = #t, {}, {}
+  for i = 1, n do keys[i] = i end
+  for k in pairs(t) do
+    if not (math.type(k) == "integer" and k >= 1 and k <= n) then rest[#rest + 1] = k end
+  end
+  table.sort(rest, function(a, b)
+    if type(a) ~= type(b) then return type(a) < type(b) end
+    if type(a) == "number" or type(a) == "string" then return a < b end
+    return tostring(a) < tostring(b)
+  end)
+  for _, k in ipairs(rest) do keys[#keys + 1] = k end
+  return keys, n
+end
+-- "k = ", or nothing for the list's entries (indexed: "[i] = ")
+local function key_text(k, n, indexed)
+  if math.type(k) == "integer" and k >= 1 and k <= n then return indexed and ("[%d] = "):format(k) or "" end
+  if type(k) == "string" and k:match("^[%a_][%w_]*$") then return k .. " = " end
+  return "[" .. report.show(k) .. "] = "
+end
+local function inline(v, depth)
+  if type(v) ~= "table" or has_tostring(v) then return report.show(v) end
+  local keys, n = keys_of(v)
+  if #keys == 0 then return "{}" end
+  if depth > 2 or #keys > 4 then return nil end
+  local parts = {}
+  for i, k in ipairs(keys) do
+    local x = inline(v[k], depth + 1)
+    if not x then return nil end
+    parts[i] = key_text(k, n) .. x
+  end
+  local text = "{ " .. table.concat(parts, ", ") .. " }"
+  return #text <= 80 and text or nil
+end
+function report.display(v)
+  if type(v) ~= "table" or has_tostring(v) then return v end
+  local keys, n = keys_of(v)
+  if #keys == 0 then return "{}" end
+  local one, each = {}, {}
+  for i = 1, math.min(#keys, MAX_FIELDS) do
+    local k = keys[i]
+    local x = inline(v[k], 1)
+    if not x then
+      local m = #keys_of(v[k])
+      x = ("{...} (%d field%s)"):format(m, plural(m))
+    end
+    one[i], each[i] = key_text(k, n) .. x, key_text(k, n, true) .. x
+  end
+  local line = "{ " .. table.concat(one, ", ") .. " }"
+  if #keys <= MAX_FIELDS and #line <= 100 then return line end
+  if #keys > MAX_FIELDS then each[#each + 1] = ("... (%d fields in all)"):format(#keys) end
+  return "{\n  " .. table.concat(each, ",\n  ") .. "\n}"
+end
+-- The prompt's print of an expression's values (src/main.c).
+function report.print_values(...)
+  local out = table.pack(...)
+  for i = 1, out.n do out[i] = report.display(out[i]) end
+  print(table.unpack(out, 1, out.n))
+end
 
 -- Gives a fresh result from the core its metatables.
 function report.wrap(r)

@@ -601,7 +601,8 @@ again:
     return status;
 }
 
-/* Prints the values above base with the global print. */
+/* Prints the values above base: with blocklim.report's print_values
+ * (a plain table as its fields), else the global print. */
 static int print_results(lua_State *L, int base)
 {
     int n = lua_gettop(L) - base;
@@ -609,7 +610,16 @@ static int print_results(lua_State *L, int base)
     if (n == 0)
         return LUA_OK;
     luaL_checkstack(L, LUA_MINSTACK, "too many results to print");
-    lua_getglobal(L, "print");
+    lua_getfield(L, LUA_REGISTRYINDEX, LUA_LOADED_TABLE);
+    int shown = lua_getfield(L, -1, "blocklim.report") == LUA_TTABLE &&
+                lua_getfield(L, -1, "print_values") == LUA_TFUNCTION;
+    if (shown) {
+        lua_replace(L, -3);
+        lua_pop(L, 1);
+    } else {
+        lua_settop(L, base + n);
+        lua_getglobal(L, "print");
+    }
     lua_insert(L, base + 1);
     return docall(L, n, 0);
 }

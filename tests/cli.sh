@@ -27,6 +27,11 @@ check "piped input: multi-line statements and expression values, no prompts" \
   test "$out" = "$(printf '30\n1\n2')"
 out=$(printf 'math.max(1,\n5)\nt = {\n7}\nt[1]\n' | "$bin")
 check "piped input: an expression over two lines prints its value" test "$out" = "$(printf '5\n7')"
+out=$(printf '{ 1, 2.5, x = "a", [true] = { 3, y = 4 } }\nt = {}\nfor i = 1, 25 do t[i] = i end\nt\n' | "$bin")
+check "piped input: a table's value shows its fields (doc/guide.md, The prompt)" \
+  test "$(printf '%s\n' "$out" | head -1)" = '{ 1, 2.5, [true] = { 3, y = 4 }, x = "a" }'
+check "piped input: a long table a field a line, at most 20" \
+  test "$(printf '%s\n' "$out" | sed -n '2p;22p;23p;24p' | tr -d ' ')" = "$(printf '{\n[20]=20,\n...(25fieldsinall)\n}')"
 out=$(printf 'model{ mu = -1 }\nprint("alive")\n' | "$bin" 2>"$tmp/err")
 check "piped input: an error does not end the session" test "$out" = alive
 check "piped input: the error names the function and field" grep -q "model: field 'mu'" "$tmp/err"
