@@ -168,9 +168,12 @@ return function(M, load_ratio)
       -- (the core refuses a weight whose moment it would not hold: say so
       -- of the fill, the field the user gave)
       local ok, why = pcall(M.load, { dead = l[1] })
-      if not ok then
+      local moment = not ok and tostring(why):match("gives the weight (.-): the solve")
+      if moment then
         fail(("field 'fill': the fill over voussoir %d lies too high above it for the solve (%s): lower 'level'")
-          :format(l.voussoir, tostring(why):match("gives the weight (.-): the solve") or tostring(why)))
+          :format(l.voussoir, moment))
+      elseif not ok then
+        error(why, 0)
       end
     end
     -- Springings continue each end joint along the arch's tangent, away from it.

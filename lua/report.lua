@@ -52,7 +52,7 @@ function Result.__tostring(r)
       say("  no joint has finite, non-zero friction, so none dilates: the associative answer is the")
       say("  non-associative one (no sequence ran)")
     elseif r.live_scales_dead then
-      say("  the live load is the self weight along gravity: at every alpha the problem is the dead")
+      say("  the live load is the weights along gravity: at every alpha the problem is the dead")
       say("  load's, scaled, and the structure carries it; no collapse, with dilatancy or without")
     elseif r.alpha_assoc == math.huge and r.status == "unbounded" then
       say("  the associative LP and the one without friction are both unbounded: no mechanism")

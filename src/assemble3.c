@@ -351,9 +351,9 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
         fl = bl_v3_scale(fl, 1.0 / s->W0);
         bl_vec3 md = bl_v3_add(moment(arm, fd), pl->live ? zero : c);
         bl_vec3 ml = bl_v3_add(moment(arm, fl), pl->live ? c : zero);
-        double d[6] = {fd.x, fd.y, fd.z, md.x, md.y, md.z}, l6[6] = {fl.x, fl.y, fl.z, ml.x, ml.y, ml.z};
+        double d6[6] = {fd.x, fd.y, fd.z, md.x, md.y, md.z}, l6[6] = {fl.x, fl.y, fl.z, ml.x, ml.y, ml.z};
         for (int i = 0; i < 6; i++) {
-            s->rhs[r + i] -= d[i];
+            s->rhs[r + i] -= d6[i];
             fL[r + i] += l6[i];
         }
     }

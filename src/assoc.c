@@ -409,15 +409,14 @@ int bl_assoc_dead_alone(const bl_model *m, const bl_solve_options *o, bl_solutio
     int n = 0;
     for (int l = 0; l < c->nloads; l++)
         if (!c->loads[l].live) {
-            bl_point_load *pl = &c->loads[n];
+            bl_point_load *pl = &c->loads[n++];
+            bl_vec2 live2;
+            bl_vec3 live3;
             *pl = c->loads[l];
-            if (pl->weight > 0.0) { /* its dead force, as a force */
-                pl->force = bl_v2_scale(bl_model_gravity(m), pl->weight);
-                pl->force3 = bl_v3_scale(bl_model_gravity3(m), pl->weight);
-                pl->weight = 0.0;
-            }
+            bl_point_load_forces(m, pl, &pl->force, &live2); /* a weight's dead force, as a force */
+            bl_point_load_forces3(m, pl, &pl->force3, &live3);
+            pl->weight = 0.0;
             pl->live = 1;
-            n++;
         }
     c->nloads = n;
     bl_solve_options d = *o;

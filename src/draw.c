@@ -729,7 +729,8 @@ static void draw3(cairo_t *cr, const pic *P)
 
 /* Every point load as an arrow ending where it acts (on its block as
  * moved), along its force (a carried weight along gravity), of one length
- * (ARROW of the canvas's width, not to scale): dead grey, live purple.  A couple alone, or a force along the line of sight, has none. */
+ * (ARROW of the canvas's width, not to scale): dead grey, live purple.  A
+ * couple alone, or a force along the line of sight, has none. */
 static void load_arrows(cairo_t *cr, const pic *P)
 {
     const bl_model *m = P->m;

@@ -990,8 +990,10 @@ static void push_thrust(lua_State *L, const bl_solution *s)
     lua_pop(L, 2);
 }
 
-/* Builds the result table of doc/guide.md from s (on the stack at sidx). */
-static void push_result(lua_State *L, const bl_solution *s, int sidx)
+/* Builds the result table of doc/guide.md from s (on the stack at sidx);
+ * dead: s is the dead-load check's r.dead, whose live load is the dead one
+ * (no participating mass: no acceleration loads it). */
+static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
 {
     const bl_model *m = s->model;
     lua_createtable(L, 0, 20);
@@ -1130,10 +1132,11 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx)
     }
     lua_setfield(L, -2, "states");
     bl_participation pp;
-    if (bl_solution_participation(s, &pp) == 0) {
-        lua_createtable(L, 0, 5);
+    if (!dead && bl_solution_participation(s, &pp) == 0) {
+        lua_createtable(L, 0, 6);
         set_number(L, "chain", pp.chain);
         set_integer(L, "blocks", pp.blocks);
+        set_integer(L, "groups", pp.groups);
         set_number(L, "participating", pp.participating);
         set_number(L, "ratio", pp.ratio);
         set_number(L, "acceleration", pp.acceleration);
@@ -1373,9 +1376,9 @@ static int model_solve(lua_State *L)
     const bl_solution *s = *box;
     if (s->status == BL_INTERRUPTED && !s->interrupted)
         return fail(L, "solve: interrupted (Ctrl-C); the model is as it was");
-    push_result(L, s, sidx);
+    push_result(L, s, sidx, 0);
     if (*dead) {
-        push_result(L, *dead, sidx - 1);
+        push_result(L, *dead, sidx - 1, 1);
         lua_setfield(L, -2, "dead");
     }
     lua_pushvalue(L, -1);

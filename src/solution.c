@@ -164,6 +164,13 @@ double bl_solution_block_speed(const bl_solution *s, int b)
     return d;
 }
 
+/* The group of block b: the root of its tree in up (path halving). */
+static int group_of(int *up, int b)
+{
+    while (up[b] != b) b = up[b] = up[up[b]];
+    return b;
+}
+
 int bl_solution_participation(const bl_solution *s, bl_participation *p)
 {
     const bl_model *m = s->model;
@@ -172,36 +179,62 @@ int bl_solution_participation(const bl_solution *s, bl_participation *p)
     for (int l = 0; l < m->nloads; l++)
         if (m->loads[l].live) return -1;
     bl_vec3 d = m->dim == 3 ? m->live_dir3 : bl_v3(m->live_dir.x, m->live_dir.y, 0.0);
-    int nb = m->nblocks;
+    int nb = m->nblocks, *up = malloc((size_t)nb * sizeof *up);
+    double *sum = calloc(4 * (size_t)nb, sizeof *sum); /* per group: chain, work, square, blocks */
     double *speed = malloc((size_t)nb * sizeof *speed), fastest = 0.0;
-    if (!speed) return -1;
+    int rc = -1;
+    if (!up || !sum || !speed) goto done;
     for (int b = 0; b < nb; b++) {
         speed[b] = m->blocks[b].support ? 0.0 : bl_solution_block_speed(s, b);
+        if (!isfinite(speed[b])) goto done;
         fastest = fmax(fastest, speed[b]);
+        up[b] = b;
+    }
+    if (!(fastest > 0.0)) goto done;
+    /* the moving blocks, in groups joined by their interfaces: each group
+     * is a mechanism of its own (an interior point's blend of mechanisms
+     * tied at alpha moves several) */
+    for (int b = 0; b < nb; b++) speed[b] = speed[b] >= BL_STILL_FRACTION * fastest;
+    for (int k = 0; k < m->ninterfaces; k++) {
+        int a = m->interfaces[k].a, b = m->interfaces[k].b;
+        if (speed[a] && speed[b]) up[group_of(up, a)] = group_of(up, b);
     }
     /* each mass: the carried weights at their points (l < nloads), and
      * each block's own at its centroid (l = nloads + b), on moving blocks */
-    double work = 0.0, square = 0.0;
     for (int l = 0; l < m->nloads + nb; l++) {
         int own = l >= m->nloads, b = own ? l - m->nloads : m->loads[l].block;
         const bl_block *B = &m->blocks[b];
-        if (B->support || !(speed[b] >= BL_STILL_FRACTION * fastest)) continue;
-        if (!own && !(m->loads[l].weight > 0.0)) continue;
+        if (!speed[b] || (!own && !(m->loads[l].weight > 0.0))) continue;
         double P = own ? B->weight : m->loads[l].weight;
         bl_vec3 at = own ? (m->dim == 3 ? B->centroid3 : bl_v3(B->centroid.x, B->centroid.y, 0.0))
                          : (m->dim == 3 ? m->loads[l].at3 : bl_v3(m->loads[l].at.x, m->loads[l].at.y, 0.0));
-        double v = bl_v3_dot(bl_solution_velocity(s, b, at), d);
-        p->blocks += own;
-        p->chain += P;
-        work += P * v;
-        square += P * v * v;
+        double v = bl_v3_dot(bl_solution_velocity(s, b, at), d), *g = sum + 4 * group_of(up, b);
+        g[0] += P;
+        g[1] += P * v;
+        g[2] += P * v * v;
+        g[3] += own;
     }
+    /* the group that the least acceleration activates */
+    for (int b = 0; b < nb; b++) {
+        const double *g = sum + 4 * b;
+        if (!(g[0] > 0.0)) continue;
+        p->groups++;
+        if (!(g[2] > 0.0)) continue; /* it moves across d only */
+        double ms = g[1] * g[1] / g[2], e = ms / g[0], acc = s->alpha / e;
+        if (p->blocks == 0 || acc < p->acceleration) {
+            p->chain = g[0];
+            p->participating = ms;
+            p->ratio = e;
+            p->acceleration = acc;
+            p->blocks = (int)g[3];
+        }
+    }
+    rc = p->blocks > 0 ? 0 : -1;
+done:
+    free(up);
+    free(sum);
     free(speed);
-    if (!(fastest > 0.0) || !(square > 0.0) || !isfinite(square)) return -1;
-    p->participating = work * work / square;
-    p->ratio = p->participating / p->chain;
-    p->acceleration = s->alpha / p->ratio;
-    return 0;
+    return rc;
 }
 
 /* Relative threshold below which a relative velocity counts as zero. */

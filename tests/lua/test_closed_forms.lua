@@ -478,7 +478,7 @@ do
   end
 end
 
--- The participating weight of the mechanism (r.participation, theory T9):
+-- The participating weight of the mechanism (r.participation, theory T4.1):
 -- with the weights P_i at their points and d_i their velocities along the
 -- live load, M* = (sum P d)^2 / sum P d^2 over the moving blocks, e* =
 -- M* / sum P.  Rocking about the toe, d_i is proportional to the height
@@ -493,7 +493,24 @@ for _, k in ipairs { 3, 5, 8 } do -- b/H < mu: rocking
   T.near(p.ratio, 3 * k * k / (4 * k * k - 1), 1e-9,
          ("column of %d blocks rocking as one: e* = 3 k^2 / (4 k^2 - 1)"):format(k))
   T.near(p.chain, k * 0.15, 1e-12, ("column of %d blocks: the chain weighs k W"):format(k))
-  T.near(p.acceleration, r.alpha / p.ratio, 1e-12, ("column of %d blocks: acceleration = alpha / e*"):format(k))
+  load { live = "horizontal", direction = { -1, 0 } }
+  T.near(solve {}.participation.ratio, 3 * k * k / (4 * k * k - 1), 1e-9,
+         ("column of %d blocks rocking towards -x: the same e*"):format(k))
+end
+-- Two piers of one slenderness b/h = 1/3 and different sizes rock at the
+-- same alpha: the interior point returns both moving (the centre of the
+-- tied face), two groups, each a single block with e* = 1 (taken
+-- together: e* = (a1 + a2)^2 / ((b1 + b2)(W1 + W2)) < 1).
+do
+  model { mu = 0.6 }
+  block { vertices = { { 0, 0 }, { 0.5, 0 }, { 0.5, 1.5 }, { 0, 1.5 } } }
+  block { vertices = { { 2, 0 }, { 3, 0 }, { 3, 3 }, { 2, 3 } } }
+  block { vertices = { { -1, -0.3 }, { 4, -0.3 }, { 4, 0 }, { -1, 0 } }, support = true }
+  local r = solve { flow = "associative", lp = "ipm" }
+  local p = r.participation
+  T.ok(p.groups == 2 and math.abs(p.ratio - 1) < 1e-9 and math.abs(p.acceleration - 1 / 3) < 1e-9,
+       "two piers tied at alpha = 1/3 on the interior point: 2 groups, each e* = 1, a0* = 1/3",
+       ("%d groups, e* %.9g, a0* %.9g"):format(p.groups, p.ratio, p.acceleration))
 end
 for _, dim in ipairs { 2, 3 } do
   local b, h, W, P, H = 0.5, 1.5, 0.75, 2, 2.5
