@@ -287,63 +287,93 @@ end
 function report.blocks(list) return setmetatable(list, Blocks) end
 
 -- How the prompt shows a value: a table with no __tostring of its own as
--- its fields, the list's first in order, then the other keys sorted; a
--- field that is itself a small table (at most 4 fields, of numbers,
--- strings or such tables) inline, as { force = { 0.5, -1 }, moment = 2 },
--- any other as {...} with its size; on one line up to 100 characters,
--- else a field a line, at most MAX_FIELDS of them.
-local MAX_FIELDS = 20
+-- its fields, read raw (no __pairs, __len, __index): the list's first in
+-- order, then the other keys sorted (up to SORTED of them); a field that
+-- is itself a small table (at most 4 fields, of numbers, strings or such
+-- tables, two levels) inline, as { force = { 0.5, -1 }, moment = 2 }, any
+-- other as {...} with its size; a value that prints over several lines,
+-- or a long string, cut short; on one line up to 100 characters, else a
+-- field a line, at most MAX_FIELDS of them.
+local MAX_FIELDS, SORTED, COUNTED, INLINE, LONG = 20, 1000, 1000, 120, 80
+local KEYWORDS = {}
+for w in ("and break do else elseif end false for function goto if in local nil not or repeat "
+          .. "return then true until while"):gmatch("%a+") do KEYWORDS[w] = true end
 local function has_tostring(v)
   local mt = getmetatable(v)
-  return type(mt) == "table" and mt.__tostring ~= nil
+  return type(mt) == "table" and rawget(mt, "__tostring") ~= nil
 end
+local function scalar(v)
+  if math.type(v) == "float" then
+    if v ~= v then return "nan" end
+    if v == 0 then return "0.0" end -- not -0.0
+  end
+  local text = type(v) == "string" and ("%q"):format(v):gsub("\\\n", "\\n") or tostring(v)
+  local first = text:match("^[^\n]*")
+  if #first > LONG then return first:sub(1, LONG - 20) .. ("... (%d characters)"):format(#text) end
+  return #first < #text and first .. " ..." or text
+end
+-- The keys of t: 1..n where set, then the others, sorted if not too many
 local function keys_of(t)
-  local n, keys, rest = #t, {}, {}
-  for i = 1, n do keys[i] = i end
-  for k in pairs(t) do
+  local n, keys, rest = rawlen(t), {}, {}
+  for i = 1, n do if rawget(t, i) ~= nil then keys[#keys + 1] = i end end
+  for k in next, t do
     if not (math.type(k) == "integer" and k >= 1 and k <= n) then rest[#rest + 1] = k end
   end
-  table.sort(rest, function(a, b)
-    if type(a) ~= type(b) then return type(a) < type(b) end
-    if type(a) == "number" or type(a) == "string" then return a < b end
-    return tostring(a) < tostring(b)
-  end)
+  if #rest <= SORTED then
+    table.sort(rest, function(a, b)
+      if type(a) ~= type(b) then return type(a) < type(b) end
+      if type(a) == "number" or type(a) == "string" then return a < b end
+      return tostring(a) < tostring(b)
+    end)
+  end
   for _, k in ipairs(rest) do keys[#keys + 1] = k end
   return keys, n
 end
--- "k = ", or nothing for the list's entries (indexed: "[i] = ")
+local function size_of(t)
+  local count = 0
+  for _ in next, t do
+    count = count + 1
+    if count > COUNTED then return ("%d+ fields"):format(COUNTED) end
+  end
+  return ("%d field%s"):format(count, plural(count))
+end
+-- "k = ", "[i] = " for the list's entries (indexed) or nothing
 local function key_text(k, n, indexed)
   if math.type(k) == "integer" and k >= 1 and k <= n then return indexed and ("[%d] = "):format(k) or "" end
-  if type(k) == "string" and k:match("^[%a_][%w_]*$") then return k .. " = " end
-  return "[" .. report.show(k) .. "] = "
+  if type(k) == "string" and k:match("^[%a_][%w_]*$") and not KEYWORDS[k] then return k .. " = " end
+  return "[" .. scalar(k) .. "] = "
 end
 local function inline(v, depth)
-  if type(v) ~= "table" or has_tostring(v) then return report.show(v) end
+  if type(v) ~= "table" or has_tostring(v) then return scalar(v) end
+  if next(v) == nil then return "{}" end
+  if depth > 2 then return nil end
+  local count = 0
+  for _ in next, v do count = count + 1; if count > 4 then return nil end end
   local keys, n = keys_of(v)
-  if #keys == 0 then return "{}" end
-  if depth > 2 or #keys > 4 then return nil end
   local parts = {}
   for i, k in ipairs(keys) do
-    local x = inline(v[k], depth + 1)
+    local x = inline(rawget(v, k), depth + 1)
     if not x then return nil end
     parts[i] = key_text(k, n) .. x
   end
   local text = "{ " .. table.concat(parts, ", ") .. " }"
-  return #text <= 80 and text or nil
+  return #text <= INLINE and text or nil
 end
 function report.display(v)
   if type(v) ~= "table" or has_tostring(v) then return v end
   local keys, n = keys_of(v)
   if #keys == 0 then return "{}" end
-  local one, each = {}, {}
+  -- one line leaves out the list's indices only where its entries are plain
+  local bare = true
   for i = 1, math.min(#keys, MAX_FIELDS) do
     local k = keys[i]
-    local x = inline(v[k], 1)
-    if not x then
-      local m = #keys_of(v[k])
-      x = ("{...} (%d field%s)"):format(m, plural(m))
-    end
-    one[i], each[i] = key_text(k, n) .. x, key_text(k, n, true) .. x
+    bare = bare and not (math.type(k) == "integer" and k <= n and type(rawget(v, k)) == "table")
+  end
+  local one, each = {}, {}
+  for i = 1, math.min(#keys, MAX_FIELDS) do
+    local k, x = keys[i], rawget(v, keys[i])
+    x = inline(x, 1) or ("{...} (%s)"):format(size_of(x))
+    one[i], each[i] = key_text(k, n, not bare) .. x, key_text(k, n, true) .. x
   end
   local line = "{ " .. table.concat(one, ", ") .. " }"
   if #keys <= MAX_FIELDS and #line <= 100 then return line end

@@ -1136,6 +1136,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
         lua_createtable(L, 0, 6);
         set_number(L, "chain", pp.chain);
         set_integer(L, "blocks", pp.blocks);
+        set_integer(L, "bodies", pp.bodies);
         set_integer(L, "groups", pp.groups);
         set_number(L, "participating", pp.participating);
         set_number(L, "ratio", pp.ratio);

@@ -175,65 +175,94 @@ int bl_solution_participation(const bl_solution *s, bl_participation *p)
 {
     const bl_model *m = s->model;
     memset(p, 0, sizeof *p);
-    if (!s->has_mechanism || !s->u || !(s->alpha >= 0.0) || !m->live_weight) return -1;
+    if (!s->has_mechanism || !s->u || s->status != BL_OPTIMAL || !m->live_weight) return -1;
     for (int l = 0; l < m->nloads; l++)
         if (m->loads[l].live) return -1;
     bl_vec3 d = m->dim == 3 ? m->live_dir3 : bl_v3(m->live_dir.x, m->live_dir.y, 0.0);
-    int nb = m->nblocks, *up = malloc((size_t)nb * sizeof *up);
-    double *sum = calloc(4 * (size_t)nb, sizeof *sum); /* per group: chain, work, square, blocks */
-    double *speed = malloc((size_t)nb * sizeof *speed), fastest = 0.0;
+    int nb = m->nblocks, *group = malloc(2 * (size_t)nb * sizeof *group), *body = group + nb;
+    /* per body: its weight and its weights' work; per group: chain,
+     * work, square, blocks, bodies */
+    double *bw = calloc(7 * (size_t)nb, sizeof *bw), *bv = bw + nb, *sum = bv + nb;
+    char *moving = malloc((size_t)nb);
+    double fastest = 0.0;
     int rc = -1;
-    if (!up || !sum || !speed) goto done;
+    if (!group || !bw || !moving) goto done;
     for (int b = 0; b < nb; b++) {
-        speed[b] = m->blocks[b].support ? 0.0 : bl_solution_block_speed(s, b);
-        if (!isfinite(speed[b])) goto done;
-        fastest = fmax(fastest, speed[b]);
-        up[b] = b;
+        double v = m->blocks[b].support ? 0.0 : bl_solution_block_speed(s, b);
+        if (!isfinite(v)) goto done;
+        fastest = fmax(fastest, v);
+        bv[b] = v;
+        group[b] = body[b] = b;
     }
     if (!(fastest > 0.0)) goto done;
-    /* the moving blocks, in groups joined by their interfaces: each group
+    /* The moving blocks, in groups joined by their interfaces: each group
      * is a mechanism of its own (an interior point's blend of mechanisms
-     * tied at alpha moves several) */
-    for (int b = 0; b < nb; b++) speed[b] = speed[b] >= BL_STILL_FRACTION * fastest;
+     * tied at alpha moves several); within a group, blocks joined by
+     * interfaces that move less than BL_STILL_FRACTION of the fastest (no
+     * crack in the picture) move as one rigid body, whose weight counts at
+     * its centre (the codes' macro-block). */
+    for (int b = 0; b < nb; b++) {
+        moving[b] = bv[b] >= BL_STILL_FRACTION * fastest;
+        bv[b] = 0.0;
+    }
     for (int k = 0; k < m->ninterfaces; k++) {
         int a = m->interfaces[k].a, b = m->interfaces[k].b;
-        if (speed[a] && speed[b]) up[group_of(up, a)] = group_of(up, b);
+        if (!moving[a] || !moving[b]) continue;
+        group[group_of(group, a)] = group_of(group, b);
+        if (!(s->speed[k] >= BL_STILL_FRACTION * s->speed_max)) body[group_of(body, a)] = group_of(body, b);
     }
-    /* each mass: the carried weights at their points (l < nloads), and
-     * each block's own at its centroid (l = nloads + b), on moving blocks */
+    /* each block's weight at its centroid into its body (l >= nloads); the
+     * carried weights at their points, each a mass of its own (l < nloads) */
     for (int l = 0; l < m->nloads + nb; l++) {
         int own = l >= m->nloads, b = own ? l - m->nloads : m->loads[l].block;
         const bl_block *B = &m->blocks[b];
-        if (!speed[b] || (!own && !(m->loads[l].weight > 0.0))) continue;
+        if (!moving[b] || (!own && !(m->loads[l].weight > 0.0))) continue;
         double P = own ? B->weight : m->loads[l].weight;
         bl_vec3 at = own ? (m->dim == 3 ? B->centroid3 : bl_v3(B->centroid.x, B->centroid.y, 0.0))
                          : (m->dim == 3 ? m->loads[l].at3 : bl_v3(m->loads[l].at.x, m->loads[l].at.y, 0.0));
-        double v = bl_v3_dot(bl_solution_velocity(s, b, at), d), *g = sum + 4 * group_of(up, b);
-        g[0] += P;
-        g[1] += P * v;
-        g[2] += P * v * v;
-        g[3] += own;
+        double v = bl_v3_dot(bl_solution_velocity(s, b, at), d), *g = sum + 5 * group_of(group, b);
+        if (own) {
+            int r = group_of(body, b);
+            bw[r] += P;
+            bv[r] += P * v;
+            g[3] += 1.0;
+        } else {
+            g[0] += P;
+            g[1] += P * v;
+            g[2] += P * v * v;
+        }
+    }
+    /* a body's weight moves as its centre does: at the mean of its
+     * blocks' velocities, Σ P v / Σ P (exact for a rigid motion) */
+    for (int b = 0; b < nb; b++) {
+        if (!(bw[b] > 0.0)) continue;
+        double *g = sum + 5 * group_of(group, b);
+        g[0] += bw[b];
+        g[1] += bv[b];
+        g[2] += bv[b] * bv[b] / bw[b];
+        g[4] += 1.0;
     }
     /* the group that the least acceleration activates */
     for (int b = 0; b < nb; b++) {
-        const double *g = sum + 4 * b;
+        const double *g = sum + 5 * b;
         if (!(g[0] > 0.0)) continue;
         p->groups++;
         if (!(g[2] > 0.0)) continue; /* it moves across d only */
-        double ms = g[1] * g[1] / g[2], e = ms / g[0], acc = s->alpha / e;
+        double ms = g[1] * g[1] / g[2], e = ms / g[0], acc = fmax(s->alpha, 0.0) / e;
         if (p->blocks == 0 || acc < p->acceleration) {
             p->chain = g[0];
             p->participating = ms;
             p->ratio = e;
             p->acceleration = acc;
             p->blocks = (int)g[3];
+            p->bodies = (int)g[4];
         }
     }
     rc = p->blocks > 0 ? 0 : -1;
 done:
-    free(up);
-    free(sum);
-    free(speed);
+    free(group);
+    free(bw);
+    free(moving);
     return rc;
 }
 

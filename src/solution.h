@@ -188,20 +188,23 @@ double bl_solution_block_speed(const bl_solution *s, int b);
 /* The mechanism's participating weight under the weight-proportional live
  * load along d (doc/theory.md, T4.1).  The moving blocks (BL_STILL_FRACTION)
  * fall into groups joined by their interfaces, each a mechanism of its
- * own; for each, with P_i the weights of its blocks at their centroids and
- * the weights they carry at their points, and d_i = u(p_i) . d:
- * participating = (sum P_i d_i)^2 / sum P_i d_i^2, chain = sum P_i, ratio =
- * participating / chain, acceleration = alpha / ratio; the group with the
- * least acceleration is reported, with the number of groups. */
+ * own, and within a group into rigid bodies joined by the interfaces that
+ * move less than BL_STILL_FRACTION of the fastest.
+ * For each group, with P_i the weights of its bodies at their centres and
+ * of the weights its blocks carry at their points, and d_i the velocity
+ * of each along d: participating = (sum P_i d_i)^2 / sum P_i d_i^2, chain =
+ * sum P_i, ratio = participating / chain, acceleration = alpha / ratio;
+ * the group with the least acceleration is reported, with the number of
+ * groups. */
 typedef struct bl_participation {
     double chain, participating, ratio, acceleration;
-    int blocks; /* the group's blocks */
-    int groups; /* the groups of moving blocks */
+    int blocks, bodies; /* the group's blocks, and its rigid bodies */
+    int groups;         /* the groups of moving blocks */
 } bl_participation;
 
-/* 0 with *p filled; -1 where it is not defined: no mechanism, alpha < 0,
- * a live load other than the weights', no motion along d, a velocity
- * that is not finite, or out of memory. */
+/* 0 with *p filled; -1 where it is not defined: no mechanism, a status
+ * other than optimal, a live load other than the weights', no motion
+ * along d, a velocity that is not finite, or out of memory. */
 int bl_solution_participation(const bl_solution *s, bl_participation *p);
 
 /* Classifies every interface from the mechanism (doc/theory.md, "states"):

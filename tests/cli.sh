@@ -32,6 +32,10 @@ check "piped input: a table's value shows its fields (doc/guide.md, The prompt)"
   test "$(printf '%s\n' "$out" | head -1)" = '{ 1, 2.5, [true] = { 3, y = 4 }, x = "a" }'
 check "piped input: a long table a field a line, at most 20" \
   test "$(printf '%s\n' "$out" | sed -n '2p;22p;23p;24p' | tr -d ' ')" = "$(printf '{\n[20]=20,\n...(25fieldsinall)\n}')"
+out=$(printf 'setmetatable({ 1 }, { __len = function() return 1e8 end, __pairs = function() return 42 end })\n{ s = "a\\nb", r = setmetatable({}, { __tostring = function() return "x\\ny" end }) }\n' | timeout 10 "$bin")
+check "piped input: a table is read raw, its metamethods not called" test "$(printf '%s\n' "$out" | head -1)" = '{ 1 }'
+check "piped input: a field that prints over lines shows its first" \
+  test "$(printf '%s\n' "$out" | sed -n 2p)" = '{ r = x ..., s = "a\nb" }'
 out=$(printf 'model{ mu = -1 }\nprint("alive")\n' | "$bin" 2>"$tmp/err")
 check "piped input: an error does not end the session" test "$out" = alive
 check "piped input: the error names the function and field" grep -q "model: field 'mu'" "$tmp/err"

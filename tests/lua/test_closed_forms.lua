@@ -479,23 +479,39 @@ do
 end
 
 -- The participating weight of the mechanism (r.participation, theory T4.1):
--- with the weights P_i at their points and d_i their velocities along the
+-- with the weights P_i of its rigid bodies at their centres and of the
+-- carried weights at their points, and d_i their velocities along the
 -- live load, M* = (sum P d)^2 / sum P d^2 over the moving blocks, e* =
--- M* / sum P.  Rocking about the toe, d_i is proportional to the height
--- y_i of the point: a column of k equal blocks rocking as one has y_i =
--- (i - 1/2) h and e* = 3 k^2 / (4 k^2 - 1); a pier of weight W carrying P
--- at height H, (W h/2 + P H)^2 / (W h^2/4 + P H^2) / (W + P); a block
--- sliding alone over a still one, e* = 1 with that block's weight.
+-- M* / sum P.  A column of k equal blocks rocking as one is one body:
+-- e* = 1, as for the one block of its size (the codes' macro-block); a
+-- trilithon, piers of weight Wp rocking about their toes and a lintel Wl
+-- translating with their tops (d = h/2 and h times the rate):
+--   e* = (Wp + Wl)^2 / ((2 Wp + Wl)(Wp/2 + Wl));
+-- a pier of weight W carrying P at height H, (W h/2 + P H)^2 / (W h^2/4 +
+-- P H^2) / (W + P); a block sliding alone over a still one, e* = 1 with
+-- that block's weight.
 for _, k in ipairs { 3, 5, 8 } do -- b/H < mu: rocking
   column(0.5, 0.3, k, { mu = 0.65 })
-  local r = solve {}
-  local p = r.participation
-  T.near(p.ratio, 3 * k * k / (4 * k * k - 1), 1e-9,
-         ("column of %d blocks rocking as one: e* = 3 k^2 / (4 k^2 - 1)"):format(k))
-  T.near(p.chain, k * 0.15, 1e-12, ("column of %d blocks: the chain weighs k W"):format(k))
-  load { live = "horizontal", direction = { -1, 0 } }
-  T.near(solve {}.participation.ratio, 3 * k * k / (4 * k * k - 1), 1e-9,
-         ("column of %d blocks rocking towards -x: the same e*"):format(k))
+  for _, lp in ipairs { "simplex", "ipm" } do
+    local p = solve { lp = lp }.participation
+    T.ok(p.blocks == k and p.bodies == 1 and math.abs(p.ratio - 1) < 1e-7 and math.abs(p.chain - k * 0.15) < 1e-12,
+         ("column of %d blocks rocking as one (%s): one body of k W, e* = 1 (tolerance 1e-7)"):format(k, lp),
+         ("%d blocks, %d bodies, chain %.9g, e* %.9g"):format(p.blocks, p.bodies, p.chain, p.ratio))
+  end
+end
+do
+  model { mu = 0.6, density = 20 }
+  block { vertices = { { 0, 0 }, { 0.4, 0 }, { 0.4, 1.6 }, { 0, 1.6 } } }
+  block { vertices = { { 1.2, 0 }, { 1.6, 0 }, { 1.6, 1.6 }, { 1.2, 1.6 } } }
+  block { vertices = { { -0.1, 1.6 }, { 1.7, 1.6 }, { 1.7, 2.0 }, { -0.1, 2.0 } }, density = 24 }
+  block { vertices = { { -0.5, -0.4 }, { 2.1, -0.4 }, { 2.1, 0 }, { -0.5, 0 } }, support = true }
+  local Wp, Wl = 0.4 * 1.6 * 20, 1.8 * 0.4 * 24
+  for _, dir in ipairs { 1, -1 } do
+    load { live = "horizontal", direction = { dir, 0 } }
+    local p = solve {}.participation
+    T.near(p.ratio, (Wp + Wl) ^ 2 / ((2 * Wp + Wl) * (Wp / 2 + Wl)), 1e-9,
+           ("trilithon pushed towards %sx: e* = (Wp + Wl)^2 / ((2 Wp + Wl)(Wp/2 + Wl))"):format(dir > 0 and "+" or "-"))
+  end
 end
 -- Two piers of one slenderness b/h = 1/3 and different sizes rock at the
 -- same alpha: the interior point returns both moving (the centre of the
