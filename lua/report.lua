@@ -183,6 +183,12 @@ function Result.__tostring(r)
       :format(s.closed, s.rocking, s.sliding, s.separating)
   end
   out[#out + 1] = line
+  if r.participation then -- doc/theory.md T4.1
+    local p = r.participation
+    say("  participating mass ratio e* = %.4g (%d block%s, %d bod%s%s): alpha / e* = %.6g", p.ratio,
+        p.blocks, plural(p.blocks), p.bodies, p.bodies == 1 and "y" or "ies",
+        p.groups > 1 and (", the least of %d groups"):format(p.groups) or "", p.acceleration)
+  end
   if r.residuals then
     local e = r.residuals
     say("  residuals (scaled, tolerance %s): equilibrium %s, yield %s, admissibility %s,",
