@@ -1,17 +1,24 @@
 -- dxf.lua - the closed polylines of an ASCII DXF file, for import{}
 -- (import.lua).
 --
--- read(text, where, fail) -> shapes, skipped, decimals
--- A shape is { name = layer, line, points = {{x, y, z}, ...} }: every closed
--- LWPOLYLINE, and every closed POLYLINE with its VERTEX entities up to
--- SEQEND, of the ENTITIES section, in model space, in world coordinates
--- (an entity drawn from below, extrusion (0, 0, -1), mirrored back).  A
--- point repeated next to itself, or the first point repeated at the end, is
--- one point.  Everything else is listed in `skipped` ("line 40: LINE").
+-- read(text, where, fail, step) -> shapes, skipped, resolution
+-- A shape is { name = layer, line, via, points = {{x, y, z}, ...} }: every
+-- closed LWPOLYLINE, and every closed POLYLINE with its VERTEX entities up
+-- to SEQEND, of the ENTITIES section, in model space, and of the blocks
+-- that INSERT entities place there (nested, arrays of MINSERT), in world
+-- coordinates.  An entity drawn from below (extrusion (0, 0, -1)) is
+-- mirrored back.  An arc segment (a bulge) becomes chords of at most
+-- `step` radians each, on the arc; the same arc drawn from either end
+-- gives the same points, so two shapes that share it still touch.  A point
+-- repeated next to itself, or the first point repeated at the end, is one
+-- point.  In a block, an entity on layer 0 takes the layer of its INSERT,
+-- and `via` names the block and the INSERT's line.  Everything else is
+-- listed in `skipped` ("line 40: LINE"; an inserted block's once).
 -- Files before AutoCAD 2007 (R12 to 2004) write names in their code page:
 -- Windows-1252 is read as such; "\U+00E4" escapes are read in every file.
--- `decimals` is the most digits written after a decimal point in a
--- coordinate (nil where none has one).
+-- `resolution` is the last digit written in a coordinate (10^-decimals),
+-- times the largest scale of an INSERT a shape comes through (nil where no
+-- coordinate has a decimal point).
 local M = {}
 
 local function finite(v) return type(v) == "number" and v == v and math.abs(v) < math.huge end
@@ -34,7 +41,48 @@ local function decode(s, cp1252)
   return (s:gsub("\\U%+(%x%x%x%x)", function(h) return utf8.char(tonumber(h, 16)) end))
 end
 
-function M.read(text, where, fail)
+-- Affine maps of the x-y plane, with z scaled and shifted apart:
+-- { a, b, c, d, e, f, zs, zt }: x' = a x + b y + e, y' = c x + d y + f,
+-- z' = zs z + zt.
+local IDENTITY = { 1, 0, 0, 1, 0, 0, 1, 0 }
+local function apply(T, p)
+  return { T[1] * p[1] + T[2] * p[2] + T[5], T[3] * p[1] + T[4] * p[2] + T[6], T[7] * p[3] + T[8] }
+end
+local function compose(S, T) -- S after T
+  return { S[1] * T[1] + S[2] * T[3], S[1] * T[2] + S[2] * T[4], S[3] * T[1] + S[4] * T[3], S[3] * T[2] + S[4] * T[4],
+           S[1] * T[5] + S[2] * T[6] + S[5], S[3] * T[5] + S[4] * T[6] + S[6], S[7] * T[7], S[7] * T[8] + S[8] }
+end
+-- the most T stretches a length
+local function stretch(T)
+  return math.max(math.abs(T[1]) + math.abs(T[2]), math.abs(T[3]) + math.abs(T[4]), math.abs(T[7]))
+end
+-- seen from below, x is mirrored, and so is z
+local MIRROR = { -1, 0, 0, 1, 0, 0, -1, 0 }
+
+-- The points strictly inside the arc from p to q of bulge b (the tangent of
+-- a quarter of its angle, positive counter-clockwise), on chords of at most
+-- `step` radians, computed from the lower end so that the arc drawn the
+-- other way round gives the same points.
+local function arc(p, q, b, step)
+  local flip = q[1] < p[1] or q[1] == p[1] and q[2] < p[2]
+  if flip then p, q, b = q, p, -b end
+  local theta = 4 * math.atan(b)
+  local n = math.ceil(math.abs(theta) / step * (1 - 1e-12))
+  local k = (1 - b * b) / (4 * b) -- the centre lies k times the chord to its left
+  local cx, cy = (p[1] + q[1]) / 2 - k * (q[2] - p[2]), (p[2] + q[2]) / 2 + k * (q[1] - p[1])
+  local r = math.sqrt((p[1] - cx) ^ 2 + (p[2] - cy) ^ 2)
+  local a0, out = math.atan(p[2] - cy, p[1] - cx), {}
+  for i = 1, n - 1 do
+    local a = a0 + theta * i / n
+    out[#out + 1] = { cx + r * math.cos(a), cy + r * math.sin(a), p[3] }
+  end
+  if flip then
+    for i = 1, #out // 2 do out[i], out[#out + 1 - i] = out[#out + 1 - i], out[i] end
+  end
+  return out
+end
+
+function M.read(text, where, fail, step)
   if text:sub(1, 18) == "AutoCAD Binary DXF" then
     fail(where(1) .. ": a binary DXF; save the drawing as ASCII DXF")
   end
@@ -52,25 +100,44 @@ function M.read(text, where, fail)
   end
   if code then fail(("%s: the file ends after a group code, without its value"):format(where(n))) end
 
-  -- the header's code page and version, and the entities of ENTITIES
-  local version, codepage, entities, section, closed = "", "", {}, nil, false
+  -- the header's code page and version, the entities of ENTITIES, and the
+  -- blocks of BLOCKS, each with its entities (BLOCK to ENDBLK)
+  local version, codepage, entities, blocks, section, closed = "", "", {}, {}, nil, false
+  local block, into = nil, nil -- the block being read, and the list its pairs go to
   for i, p in ipairs(pairs_) do
     local prev = pairs_[i - 1]
     if p.code == 0 and p.value == "SECTION" then
       section = nil
     elseif p.code == 2 and prev and prev.code == 0 and prev.value == "SECTION" then
-      section = p.value
+      section, into = p.value, nil
     elseif p.code == 0 and p.value == "ENDSEC" then
       closed = closed or section == "ENTITIES"
-      section = nil
+      section, into = nil, nil
     elseif section == "HEADER" and prev and prev.code == 9 then
       if prev.value == "$ACADVER" then version = p.value end
       if prev.value == "$DWGCODEPAGE" then codepage = p.value end
     elseif section == "ENTITIES" then
       if p.code == 0 then
         entities[#entities + 1] = { type = p.value, line = p.line }
-      elseif #entities > 0 then
-        table.insert(entities[#entities], p)
+        into = entities[#entities]
+      elseif into then
+        into[#into + 1] = p
+      end
+    elseif section == "BLOCKS" then
+      if p.code == 0 and p.value == "BLOCK" then
+        block = { type = "BLOCK", line = p.line, entities = {} }
+        blocks[#blocks + 1], into = block, block
+      elseif p.code == 0 and p.value == "ENDBLK" then
+        block, into = nil, nil
+      elseif p.code == 0 then
+        if block then
+          block.entities[#block.entities + 1] = { type = p.value, line = p.line }
+          into = block.entities[#block.entities]
+        else
+          into = nil
+        end
+      elseif into then
+        into[#into + 1] = p
       end
     end
   end
@@ -81,7 +148,7 @@ function M.read(text, where, fail)
   end
   local cp1252 = version < "AC1021" and codepage:upper() == "ANSI_1252"
 
-  local shapes, skipped, decimals, poly = {}, {}, nil, nil
+  local shapes, skipped, decimals, grow = {}, {}, nil, 0
   local function what(e, layer) return ("%s on layer '%s'"):format(e.type, layer) end
   local function number(e, p, layer)
     local v = not p.value:find("[xXnN]") and tonumber(p.value)
@@ -95,21 +162,35 @@ function M.read(text, where, fail)
     end
     return v
   end
-  -- an entity's layer, flags, elevation, space, extrusion and points
-  local function fields(e)
-    local f, pts, layer = { flags = 0, ext = { 0, 0, 1 } }, {}, "0"
-    for _, p in ipairs(e) do
-      if p.code == 8 then layer = decode(p.value, cp1252) end
+  local function integer(e, p, layer, name)
+    local v = math.tointeger(number(e, p, layer))
+    if not v then
+      fail(("%s: %s: group %d (%s) must be an integer, got '%s'"):format(where(p.line), what(e, layer), p.code,
+           name, p.value))
     end
-    f.layer = layer
+    return v
+  end
+  local function layer_of(e)
+    for _, p in ipairs(e) do
+      if p.code == 8 then return decode(p.value, cp1252) end
+    end
+    return "0"
+  end
+  local function extrusion(e, f)
+    local ex = f.ext
+    if math.abs(ex[1]) + math.abs(ex[2]) > 1e-12 * math.abs(ex[3]) or ex[3] == 0 then
+      fail(("%s: %s: drawn in a plane other than the world's x-y (extrusion %g %g %g): turn it into x-y")
+           :format(where(e.line), what(e, f.layer), ex[1], ex[2], ex[3]))
+    end
+    return ex[3] < 0
+  end
+  -- a polyline's layer, flags, elevation, space, extrusion and points (each
+  -- with the bulge of the segment it begins)
+  local function fields(e, layer)
+    local f, pts = { flags = 0, ext = { 0, 0, 1 }, layer = layer }, {}
     for _, p in ipairs(e) do
       local c = p.code
-      if c == 70 then
-        f.flags = math.tointeger(number(e, p, layer))
-        if not f.flags then
-          fail(("%s: %s: group 70 (flags) must be an integer, got '%s'"):format(where(p.line), what(e, layer),
-               p.value))
-        end
+      if c == 70 then f.flags = integer(e, p, layer, "flags")
       elseif c == 38 then f.elevation = number(e, p, layer)
       elseif c == 67 then f.paper = number(e, p, layer) == 1
       elseif c == 90 then f.count = math.tointeger(number(e, p, layer))
@@ -121,9 +202,13 @@ function M.read(text, where, fail)
                c - 10))
         end
         q[k] = number(e, p, layer)
-      elseif c == 42 and number(e, p, layer) ~= 0 then
-        fail(("%s: %s: an arc segment (bulge); draw it as straight segments"):format(where(p.line),
-             what(e, layer)))
+      elseif c == 42 then
+        local b = number(e, p, layer)
+        if math.abs(b) > 1e4 then
+          fail(("%s: %s: a bulge of %g, an arc of almost a whole circle; draw it as two arcs"):format(
+               where(p.line), what(e, layer), b))
+        end
+        if pts[#pts] and b ~= 0 then pts[#pts].bulge = b end
       elseif c >= 210 and c <= 230 and c % 10 == 0 then f.ext[(c - 200) // 10] = number(e, p, layer)
       end
     end
@@ -133,87 +218,184 @@ function M.read(text, where, fail)
       end
       q[3] = q[3] or 0
     end
-    local ex = f.ext
-    if math.abs(ex[1]) + math.abs(ex[2]) > 1e-12 * math.abs(ex[3]) or ex[3] == 0 then
-      fail(("%s: %s: drawn in a plane other than the world's x-y (extrusion %g %g %g): turn it into x-y")
-           :format(where(e.line), what(e, layer), ex[1], ex[2], ex[3]))
-    end
-    f.mirrored = ex[3] < 0
+    f.mirrored = extrusion(e, f)
     return f, pts
   end
-  local function add(e, f, pts)
-    if f.paper then
-      skipped[#skipped + 1] = ("line %d: %s in paper space"):format(e.line, what(e, f.layer))
-      return
+
+  -- The entities of a list (the ENTITIES section, or a block's) as shapes,
+  -- through T; `into` is the INSERT that places the list ({ layer, via,
+  -- names = the blocks it goes through }), nil in ENTITIES.
+  local byname, listed = {}, {}
+  for _, b in ipairs(blocks) do
+    b.base = { 0, 0, 0 }
+    for _, p in ipairs(b) do
+      if p.code == 2 then b.name = decode(p.value, cp1252) end
+      if p.code == 70 then b.flags = integer(b, p, "0", "flags") end
+      if p.code >= 10 and p.code <= 30 and p.code % 10 == 0 then b.base[p.code // 10] = number(b, p, "0") end
     end
-    -- world coordinates: seen from below, x is mirrored, and so is z
-    for _, q in ipairs(pts) do
-      if f.mirrored then q[1], q[3] = -q[1], -q[3] end
-      q.line = nil
+    if b.name then byname[b.name:upper()] = b end
+  end
+  local walk
+  local function skip(e, why, inside)
+    if inside then
+      if listed[inside] then return end
+      why = ("%s in block '%s'"):format(why, inside.name)
     end
+    skipped[#skipped + 1] = ("line %d: %s"):format(e.line, why)
+  end
+  local function add(e, f, pts, T, into, inside)
+    if f.paper then return skip(e, what(e, f.layer) .. " in paper space", inside) end
     local kept = {}
     for _, q in ipairs(pts) do
       local r = kept[#kept]
-      if not (r and r[1] == q[1] and r[2] == q[2] and r[3] == q[3]) then kept[#kept + 1] = q end
+      if r and r[1] == q[1] and r[2] == q[2] and r[3] == q[3] then
+        r.bulge = q.bulge
+      else
+        kept[#kept + 1] = q
+      end
     end
     local a, b = kept[1], kept[#kept]
     local ends = #kept > 1 and a[1] == b[1] and a[2] == b[2] and a[3] == b[3]
     if ends then kept[#kept] = nil end
-    if f.flags & 1 == 1 or ends then
-      shapes[#shapes + 1] = { name = f.layer, line = e.line, points = kept }
-    else
-      skipped[#skipped + 1] = ("line %d: open %s"):format(e.line, what(e, f.layer))
-    end
-  end
-  local function unfinished()
-    if poly then
-      fail(("%s: %s has no SEQEND after its vertices: is the file cut short?"):format(where(poly.e.line),
-           what(poly.e, poly.f.layer)))
-    end
-  end
-  for _, e in ipairs(entities) do
-    if e.type == "VERTEX" then
-      if not poly then fail(where(e.line) .. ": a VERTEX outside a POLYLINE") end
-      local vf, pts = fields(e)
-      if not pts[1] then fail(where(e.line) .. ": a VERTEX without its point (group 10)") end
-      pts[1][3] = poly.f.flags & 8 == 8 and pts[1][3] or (poly.f.elevation or 0)
-      poly.pts[#poly.pts + 1] = pts[1]
-      if vf.flags & 16 == 16 then
-        fail(("%s: a spline frame's control point in %s: a 2D model takes polylines of straight segments")
-             :format(where(e.line), what(poly.e, poly.f.layer)))
+    if f.flags & 1 == 0 and not ends then return skip(e, "open " .. what(e, f.layer), inside) end
+    if f.mirrored then T = compose(T, MIRROR) end
+    local out = {}
+    for i, q in ipairs(kept) do
+      out[#out + 1] = apply(T, q)
+      if q.bulge then
+        for _, r in ipairs(arc(q, kept[i % #kept + 1], q.bulge, step)) do out[#out + 1] = apply(T, r) end
       end
-    elseif e.type == "SEQEND" and poly then
-      add(poly.e, poly.f, poly.pts)
-      poly = nil
-    else
-      unfinished()
-      if e.type == "LWPOLYLINE" then
-        local f, pts = fields(e)
-        if f.count and f.count ~= #pts then
-          fail(("%s: %s: %d points where group 90 says %d: is the file cut short?"):format(where(e.line),
-               what(e, f.layer), #pts, f.count))
+    end
+    grow = math.max(grow, stretch(T))
+    if #shapes == 1000000 then
+      fail(("%s: %s: more than a million closed polylines"):format(where(e.line), what(e, f.layer)))
+    end
+    shapes[#shapes + 1] = { name = f.layer, line = e.line, points = out, via = into and into.via }
+  end
+  local function insert(e, T, into, inside)
+    local layer = layer_of(e)
+    if layer == "0" and into then layer = into.layer end
+    local f = { ext = { 0, 0, 1 }, layer = layer }
+    local s, at, cols, rows, step_c, step_r, turn, name = { 1, 1, 1 }, { 0, 0, 0 }, 1, 1, 0, 0, 0, nil
+    for _, p in ipairs(e) do
+      local c = p.code
+      if c == 2 then name = decode(p.value, cp1252)
+      elseif c == 10 or c == 20 or c == 30 then at[c // 10] = number(e, p, layer)
+      elseif c == 41 or c == 42 or c == 43 then s[c - 40] = number(e, p, layer)
+      elseif c == 50 then turn = math.rad(number(e, p, layer))
+      elseif c == 70 then cols = integer(e, p, layer, "columns")
+      elseif c == 71 then rows = integer(e, p, layer, "rows")
+      elseif c == 44 then step_c = number(e, p, layer)
+      elseif c == 45 then step_r = number(e, p, layer)
+      elseif c == 67 then f.paper = number(e, p, layer) == 1
+      elseif c >= 210 and c <= 230 and c % 10 == 0 then f.ext[(c - 200) // 10] = number(e, p, layer)
+      end
+    end
+    if f.paper then return skip(e, what(e, layer) .. " in paper space", inside) end
+    if not name then fail(("%s: %s without its block's name (group 2)"):format(where(e.line), what(e, layer))) end
+    local b = byname[name:upper()]
+    if not b then
+      fail(("%s: %s places block '%s', which the file does not define (no BLOCK of that name in its BLOCKS "
+            .. "section)"):format(where(e.line), what(e, layer), name))
+    end
+    if (b.flags or 0) & 4 == 4 then
+      return skip(e, ("INSERT of block '%s', a reference to another drawing"):format(name), inside)
+    end
+    local names = into and into.names or {}
+    for _, seen in ipairs(names) do
+      if seen == b then
+        fail(("%s: %s places block '%s' inside itself"):format(where(e.line), what(e, layer), name))
+      end
+    end
+    if s[1] == 0 or s[2] == 0 or s[3] == 0 then
+      return skip(e, ("INSERT of block '%s' scaled to nothing"):format(name), inside)
+    end
+    cols, rows = cols == 0 and 1 or cols, rows == 0 and 1 or rows -- some programs write 0 for one
+    if cols < 1 or rows < 1 or cols * rows > 1e6 then
+      fail(("%s: %s: an array of %d columns and %d rows; give 1 to 10^6 copies"):format(where(e.line),
+           what(e, layer), cols, rows))
+    end
+    local mirrored = extrusion(e, f)
+    local c, sn = math.cos(turn), math.sin(turn)
+    local base = b.base
+    local deeper = { table.unpack(names) }
+    deeper[#deeper + 1] = b
+    local via = ("block '%s' placed at line %d"):format(name, e.line)
+    local next_into = { layer = layer, names = deeper, via = into and (via .. ", " .. into.via) or via }
+    for row = 0, rows - 1 do
+      for col = 0, cols - 1 do
+        local ox, oy = s[1] * -base[1] + col * step_c, s[2] * -base[2] + row * step_r
+        local M = { c * s[1], -sn * s[2], sn * s[1], c * s[2], at[1] + c * ox - sn * oy, at[2] + sn * ox + c * oy,
+                    s[3], at[3] - s[3] * base[3] }
+        if mirrored then M = compose(MIRROR, M) end
+        walk(b.entities, compose(T, M), next_into, b)
+        listed[b] = true
+      end
+    end
+  end
+  function walk(list, T, into, inside)
+    local poly, attributes = nil, false
+    local function unfinished()
+      if poly then
+        fail(("%s: %s has no SEQEND after its vertices: is the file cut short?"):format(where(poly.e.line),
+             what(poly.e, poly.f.layer)))
+      end
+    end
+    for _, e in ipairs(list) do
+      local layer = layer_of(e)
+      if layer == "0" and into then layer = into.layer end
+      if e.type == "VERTEX" then
+        if not poly then fail(where(e.line) .. ": a VERTEX outside a POLYLINE") end
+        local vf, pts = fields(e, layer)
+        if not pts[1] then fail(where(e.line) .. ": a VERTEX without its point (group 10)") end
+        pts[1][3] = poly.f.flags & 8 == 8 and pts[1][3] or (poly.f.elevation or 0)
+        poly.pts[#poly.pts + 1] = pts[1]
+        if vf.flags & 16 == 16 then
+          fail(("%s: a spline frame's control point in %s: a 2D model takes polylines of straight segments "
+                .. "and arcs"):format(where(e.line), what(poly.e, poly.f.layer)))
         end
-        for _, q in ipairs(pts) do q[3] = f.elevation or 0 end
-        add(e, f, pts)
-      elseif e.type == "POLYLINE" then
-        local f, pts = fields(e)
-        if f.flags & (16 | 64) ~= 0 then
-          fail(("%s: %s: a polygon or polyface mesh; a 2D model takes closed polylines"):format(where(e.line),
-               what(e, f.layer)))
-        end
-        if f.flags & (2 | 4) ~= 0 then
-          fail(("%s: %s: a curve-fit or spline-fit polyline; take the fit off (decurve it)"):format(
-               where(e.line), what(e, f.layer)))
-        end
-        f.elevation = f.elevation or (pts[1] and pts[1][3])
-        poly = { e = e, f = f, pts = {} }
+      elseif e.type == "SEQEND" and poly then
+        add(poly.e, poly.f, poly.pts, T, into, inside)
+        poly = nil
+      elseif attributes and (e.type == "ATTRIB" or e.type == "SEQEND") then
+        attributes = e.type == "ATTRIB" -- an INSERT's attributes (text) end at their SEQEND
       else
-        skipped[#skipped + 1] = ("line %d: %s"):format(e.line, e.type)
+        unfinished()
+        attributes = false
+        if e.type == "LWPOLYLINE" then
+          local f, pts = fields(e, layer)
+          if f.count and f.count ~= #pts then
+            fail(("%s: %s: %d points where group 90 says %d: is the file cut short?"):format(where(e.line),
+                 what(e, f.layer), #pts, f.count))
+          end
+          for _, q in ipairs(pts) do q[3] = f.elevation or 0 end
+          add(e, f, pts, T, into, inside)
+        elseif e.type == "POLYLINE" then
+          local f, pts = fields(e, layer)
+          if f.flags & (16 | 64) ~= 0 then
+            fail(("%s: %s: a polygon or polyface mesh; a 2D model takes closed polylines"):format(where(e.line),
+                 what(e, f.layer)))
+          end
+          if f.flags & (2 | 4) ~= 0 then
+            fail(("%s: %s: a curve-fit or spline-fit polyline; take the fit off (decurve it)"):format(
+                 where(e.line), what(e, f.layer)))
+          end
+          f.elevation = f.elevation or (pts[1] and pts[1][3])
+          poly = { e = e, f = f, pts = {} }
+        elseif e.type == "INSERT" then
+          for _, p in ipairs(e) do
+            if p.code == 66 and p.value == "1" then attributes = true end
+          end
+          insert(e, T, into, inside)
+        else
+          skip(e, e.type, inside)
+        end
       end
     end
+    unfinished()
   end
-  unfinished()
-  return shapes, skipped, decimals
+  walk(entities, IDENTITY, nil, nil)
+  return shapes, skipped, decimals and 10 ^ -decimals * math.max(grow, 1e-300)
 end
 
 return M

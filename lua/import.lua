@@ -22,7 +22,7 @@ end }
 
 return function(M)
   local allowed = { file = true, format = true, support = true, scale = true, plane = true,
-                    density = true, thickness = true }
+                    density = true, thickness = true, arc_step = true }
   local function fail(msg) error("import: " .. msg, 0) end
 
   local function finite(v) return type(v) == "number" and v == v and math.abs(v) < math.huge end
@@ -135,7 +135,7 @@ return function(M)
     if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
     for k in pairs(t) do
       if not allowed[k] then
-        fail(("unknown field '%s' (fields: density, file, format, plane, scale, support, thickness)")
+        fail(("unknown field '%s' (fields: arc_step, density, file, format, plane, scale, support, thickness)")
              :format(tostring(k)))
       end
     end
@@ -155,6 +155,13 @@ return function(M)
     if format == "dxf" and solid then fail("a DXF file gives 2D shapes; a 3D model takes OBJ files") end
     if format == "dxf" and t.plane ~= nil then
       fail("field 'plane' is for OBJ files: a DXF's polylines lie in its x-y plane")
+    end
+    if format ~= "dxf" and t.arc_step ~= nil then
+      fail("field 'arc_step' is for DXF files: an OBJ has no arcs")
+    end
+    local arc_step = t.arc_step or 0.25
+    if not finite(arc_step) or arc_step < 0.01 or arc_step > 90 then
+      fail("field 'arc_step' must be an angle from 0.01 to 90 degrees, got " .. tostring(t.arc_step))
     end
     local scale = t.scale or 1
     if not finite(scale) or not (scale > 0) then
@@ -189,11 +196,13 @@ return function(M)
     local function where(line) return ("'%s' line %d"):format(t.file, line) end
     text = text:gsub("^\239\187\191", ""):gsub("\r\n?", "\n") -- a byte-order mark; CR LF or CR alone
 
-    local shapes, skipped, decimals
+    local shapes, skipped, unit
     if format == "obj" then
+      local decimals
       shapes, skipped, decimals = obj.read(text, where, solid, fail)
+      unit = decimals and 10 ^ -decimals
     else
-      shapes, skipped, decimals = dxf.read(text, where, fail)
+      shapes, skipped, unit = dxf.read(text, where, fail, math.rad(arc_step))
     end
     if #shapes == 0 then
       fail(("'%s' has no %s"):format(t.file, format == "dxf" and "closed polylines in its ENTITIES section"
@@ -212,7 +221,7 @@ return function(M)
     -- the file's last digit; a point rounded to it is off by up to half of
     -- it on each axis, so that a plane through rounded points can miss
     -- another by about as much
-    local resolution = decimals and 10 ^ -decimals * scale
+    local resolution = unit and unit * scale
     local eps = math.max(1e-9 * size, 2 * (resolution or 0))
 
     -- In 2D every shape lies in the plane of the first one.
@@ -223,8 +232,9 @@ return function(M)
         for _, p in ipairs(s.points) do
           if math.abs(p[w] - level) > eps then
             local c = ("xyz"):sub(w, w)
-            fail(("%s: a point at %s = %.9g, off the plane %s = %.9g of the first shape: a 2D model takes "
-                  .. "shapes drawn in one plane, here the %s plane%s"):format(where(s.line), c, p[w], c, level,
+            fail(("%s%s: a point at %s = %.9g, off the plane %s = %.9g of the first shape: a 2D model takes "
+                  .. "shapes drawn in one plane, here the %s plane%s"):format(where(s.line),
+                  s.via and " (" .. s.via .. ")" or "", c, p[w], c, level,
                   ("xyz"):sub(u, u) .. "-" .. ("xyz"):sub(v, v),
                   format == "obj" and " (field 'plane': \"xy\", \"xz\" or \"yz\")" or ""))
           end
@@ -271,7 +281,8 @@ return function(M)
       local ok, b = pcall(M.block, fields)
       if not ok then
         local msg = tostring(b):gsub("^%[blocklim [%w_]+%.lua%]:%d+: ", "")
-        local label = s.name ~= "" and (" (%s '%s')"):format(format == "dxf" and "layer" or "object", s.name) or ""
+        local label = s.name ~= "" and (" (%s '%s'%s)"):format(format == "dxf" and "layer" or "object", s.name,
+                                                                 s.via and ", " .. s.via or "") or ""
         local first = solid and s.first > 1 and ("; its vertex 1 is vertex %d of the file"):format(s.first) or ""
         fail(("%s%s: %s%s"):format(where(s.line), label, msg, first))
       end

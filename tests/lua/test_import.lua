@@ -209,9 +209,20 @@ refused(3, { file = "blocks.txt" }, "a name of no known format", "field 'format'
 refused(2, { file = boxes }, "a 3D OBJ in a 2D model", "off the plane z", "field 'plane'")
 refused(2, { file = w1obj, plane = "xz", thickness = "1" }, "a thickness given as a string",
         "field 'thickness' must be a positive number")
-refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nA\n70\n1\n10\n0\n20\n0\n42\n0.5\n"
+refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nA\n70\n1\n10\n0\n20\n0\n42\n2e4\n"
                           .. "10\n1\n20\n0\n10\n1\n20\n1\n0\nENDSEC\n0\nEOF\n") },
-        "a polyline with an arc", "line 15", "LWPOLYLINE on layer 'A'", "bulge")
+        "an arc of almost a whole circle", "line 15", "LWPOLYLINE on layer 'A'", "bulge of 20000")
+refused(2, { file = w1dxf, arc_step = 0 }, "an arc_step of 0", "field 'arc_step' must be an angle from 0.01 to 90")
+refused(2, { file = w1dxf, arc_step = "1" }, "an arc_step given as a string", "field 'arc_step' must be an angle")
+refused(2, { file = w1obj, plane = "xz", arc_step = 1 }, "an arc_step for an OBJ", "field 'arc_step' is for DXF")
+refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nINSERT\n8\nA\n2\nbrick\n10\n0\n20\n0\n"
+                          .. "0\nENDSEC\n0\nEOF\n") },
+        "an INSERT of a block the file does not define", "line 5", "INSERT on layer 'A' places block 'brick'",
+        "does not define")
+refused(2, { file = write(".dxf", "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nloop\n10\n0\n20\n0\n0\nINSERT\n8\n0\n"
+                          .. "2\nLOOP\n10\n1\n20\n0\n0\nENDBLK\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nINSERT\n"
+                          .. "8\nA\n2\nloop\n10\n0\n20\n0\n0\nENDSEC\n0\nEOF\n") },
+        "a block that places itself", "line 13", "places block 'LOOP' inside itself")
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nPOLYLINE\n8\nM\n70\n64\n0\nSEQEND\n0\nENDSEC\n") },
         "a polyface mesh", "line 5", "polyface")
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLINE\n0\nENDSEC\n0\nEOF\n") },
@@ -377,6 +388,139 @@ local lev = import { file = write(".dxf", dxf("", lw("a", sq, "38\n100\n")
   .. "0\nPOLYLINE\n8\nb\n66\n1\n10\n0\n20\n0\n30\n100\n70\n1\n0\nVERTEX\n8\nb\n10\n0\n20\n1\n0\nVERTEX\n8\nb\n10\n1\n20\n1\n"
   .. "0\nVERTEX\n8\nb\n10\n1\n20\n2\n0\nSEQEND\n")) }
 T.eq(#lev, 2, "DXF: an LWPOLYLINE and a POLYLINE at one elevation (38 and the POLYLINE's 30) lie in one plane")
+
+-- 6. Arcs (bulges).  A half disc of radius 1 drawn as an arc and its
+-- diameter: chords of at most 0.25 degrees (720 of them) lose the area of
+-- the circular segments, (1 - sin t / t) ~ t^2 / 6 = 3.2e-6 of it; on a
+-- friction of 10 it rocks about its toe, alpha = r / (4 r / 3 pi) = 3 pi / 4.
+-- Drawn the other way round (clockwise, bulge -1) it is the same points.
+local function half_disc(from, to, bulge, extra)
+  return dxf("", "0\nLWPOLYLINE\n8\nstone\n90\n2\n70\n1\n" .. (extra or "")
+    .. ("10\n%g\n20\n0\n42\n%g\n10\n%g\n20\n0\n"):format(from, bulge, to)
+    .. lw("ground", { { -2, -1 }, { 2, -1 }, { 2, 0 }, { -2, 0 } }))
+end
+model { mu = 10 }
+local hd = import { file = write(".dxf", half_disc(1, -1, 1)), support = "ground" }
+local disc = current():block_info(hd[1])
+T.eq(#disc.vertices, 721, "DXF arc: a half circle in chords of 0.25 degrees (720 and the diameter)")
+T.near(disc.area, math.pi / 2, 4e-6, "DXF arc: the half disc's area, pi r^2 / 2, to the chords' 3.2e-6")
+T.near(disc.centroid[2], 4 / (3 * math.pi), 4e-6, "DXF arc: the half disc's centroid, 4 r / 3 pi")
+load { live = "horizontal" }
+T.near(solve {}.alpha, 3 * math.pi / 4, 2e-5, "DXF arc: the half disc rocks at 3 pi / 4")
+model { mu = 10 }
+local hd2 = import { file = write(".dxf", half_disc(-1, 1, -1)), support = "ground" }
+local same = true
+for i, p in ipairs(current():block_info(hd2[1]).vertices) do
+  local q = disc.vertices[i]
+  same = same and p[1] == q[1] and p[2] == q[2]
+end
+T.ok(same, "DXF arc: drawn clockwise from the other end, the same points")
+-- coarser: arc_step = 10 gives 18 chords, the area of the regular polygon
+model { mu = 10 }
+local coarse = import { file = write(".dxf", half_disc(1, -1, 1)), support = "ground", arc_step = 10 }
+T.near(current():block_info(coarse[1]).area, 9 * math.sin(math.rad(10)), 1e-12,
+       "DXF arc: arc_step = 10 gives 18 chords, area 18 sin(10 deg) / 2")
+-- mirrored (drawn from below), the arc turns the other way: the half disc
+-- lies below its diameter, on the other side of x = 0
+model { mu = 10 }
+local down = import { file = write(".dxf", dxf("", "0\nLWPOLYLINE\n8\nstone\n90\n2\n70\n1\n210\n0\n220\n0\n230\n-1\n"
+  .. "10\n1\n20\n5\n42\n1\n10\n-1\n20\n5\n")) }
+T.near(current():block_info(down[1]).centroid[2], 5 + 4 / (3 * math.pi), 4e-6,
+       "DXF arc: a half disc drawn from below is mirrored in x, its arc still above its diameter")
+-- A stone seated in a bowl: the seat's arc and the stone's, drawn in
+-- opposite senses by two polylines, meet on every chord.
+model { mu = 0.6 }
+local bowl = import { file = write(".dxf", dxf("",
+  "0\nLWPOLYLINE\n8\nstone\n70\n1\n10\n-1\n20\n1\n42\n0.41421356237309503\n10\n1\n20\n1\n10\n1\n20\n2\n10\n-1\n20\n2\n"
+  .. "0\nLWPOLYLINE\n8\nground\n70\n1\n10\n1\n20\n1\n42\n-0.41421356237309503\n10\n-1\n20\n1\n10\n-2\n20\n1\n"
+  .. "10\n-2\n20\n-1\n10\n2\n20\n-1\n10\n2\n20\n1\n")), support = "ground" }
+T.eq(contacts {}, 360, "DXF arc: a stone in a bowl of the same arc (90 degrees) touches it on all 360 chords")
+
+-- A semicircular arch of 15 voussoirs (centre-line radius 2, 0.3 thick)
+-- drawn with arcs: its extrados clockwise, its intrados counter-clockwise.
+-- With arc_step = 90 each arc is one chord, arch{}'s quadrilaterals: the
+-- same alpha.  With the default, voussoir 1 is the annular sector,
+-- area phi (ro^2 - ri^2) / 2 and centroid at (2/3) (ro^3 - ri^3) /
+-- (ro^2 - ri^2) sin(phi/2) / (phi/2) from the centre, to the chords'
+-- 3.2e-6.
+local function arch_dxf()
+  local n, ri, ro, out = 15, 1.85, 2.15, {}
+  local bulge = math.tan(math.pi / n / 4)
+  local function at(r, a) return ("10\n%.17g\n20\n%.17g\n"):format(r * math.cos(a), r * math.sin(a)) end
+  for i = 0, n - 1 do
+    local a, b = math.pi - math.pi * i / n, math.pi - math.pi * (i + 1) / n
+    out[#out + 1] = "0\nLWPOLYLINE\n8\nvoussoirs\n90\n4\n70\n1\n" .. at(ri, a) .. at(ro, a) .. ("42\n%.17g\n"):format(-bulge)
+                    .. at(ro, b) .. at(ri, b) .. ("42\n%.17g\n"):format(bulge)
+  end
+  out[#out + 1] = lw("springings", { { -1.85, 0 }, { -2.15, 0 }, { -2.15, -0.3 }, { -1.85, -0.3 } })
+  out[#out + 1] = lw("springings", { { 2.15, 0 }, { 1.85, 0 }, { 1.85, -0.3 }, { 2.15, -0.3 } })
+  return write(".dxf", dxf("", table.concat(out)))
+end
+local arch_file = arch_dxf()
+model { mu = 0.6 }
+arch { n = 15, radius = 2, thickness = 0.3 }
+load { live = "horizontal" }
+local quads = solve { flow = "associative" }.alpha
+model { mu = 0.6 }
+import { file = arch_file, support = "springings", arc_step = 90 }
+load { live = "horizontal" }
+T.near(solve { flow = "associative" }.alpha, quads, 1e-9, "DXF arc: an arch of arcs in one chord each is arch{}'s")
+model { mu = 0.6 }
+local curved = import { file = arch_file, support = "springings" }
+local v1, phi = current():block_info(curved[1]), math.pi / 15
+T.near(v1.area, phi * (2.15 ^ 2 - 1.85 ^ 2) / 2, 4e-6, "DXF arc: a curved voussoir's area, the annular sector's")
+local rc = 2 / 3 * (2.15 ^ 3 - 1.85 ^ 3) / (2.15 ^ 2 - 1.85 ^ 2) * math.sin(phi / 2) / (phi / 2)
+T.near(v1.centroid[1], rc * math.cos(math.pi - phi / 2), 1e-5, "DXF arc: a curved voussoir's centroid, x")
+T.near(v1.centroid[2], rc * math.sin(math.pi - phi / 2), 1e-5, "DXF arc: a curved voussoir's centroid, y")
+
+-- 7. Blocks placed by INSERT: W1 again, its stones one block 'brick'
+-- (400 x 175 mm, its base point at its centre, on layer 0, so that each
+-- copy takes its INSERT's layer): the full courses one MINSERT of 5
+-- columns inside a block 'course' placed three times, the half-block
+-- courses bricks scaled by 0.5 in x or turned by 180 degrees or mirrored
+-- (x scale -1); the ground a polyline.  The same alpha as wall{}'s W1.
+local B = {}
+local function bput(...) for _, v in ipairs { ... } do B[#B + 1] = tostring(v) end end
+bput("0", "SECTION", "2", "BLOCKS")
+bput("0", "BLOCK", "8", "0", "2", "brick", "70", 0, "10", 200, "20", 87.5, "30", 0)
+bput("0", "LWPOLYLINE", "8", "0", "90", 4, "70", 1, "10", 0, "20", 0, "10", 400, "20", 0, "10", 400, "20", 175,
+     "10", 0, "20", 175)
+bput("0", "TEXT", "8", "0", "1", "brick")
+bput("0", "ENDBLK")
+bput("0", "BLOCK", "8", "0", "2", "course", "70", 0, "10", 0, "20", 0, "30", 0)
+bput("0", "INSERT", "8", "0", "2", "brick", "10", 200, "20", 87.5, "70", 5, "44", 400)
+bput("0", "ENDBLK")
+bput("0", "ENDSEC", "0", "SECTION", "2", "ENTITIES")
+for k = 0, 5 do
+  local y = 87.5 + 175 * k
+  if k % 2 == 1 then
+    bput("0", "INSERT", "8", "stones", "2", "course", "10", 0, "20", 175 * k)
+  else
+    bput("0", "INSERT", "8", "stones", "2", "brick", "10", 100, "20", y, "41", 0.5, "66", 1)
+    bput("0", "ATTRIB", "8", "stones", "1", "half", "0", "SEQEND", "8", "stones")
+    bput("0", "INSERT", "8", "stones", "2", "brick", "10", 400, "20", y, "70", 2, "44", 400)
+    bput("0", "INSERT", "8", "stones", "2", "BRICK", "10", 1200, "20", y, "50", 180, "70", 2, "44", -400)
+    bput("0", "INSERT", "8", "stones", "2", "brick", "10", 1900, "20", y, "41", -0.5)
+  end
+end
+bput("0", "LWPOLYLINE", "8", "GROUND", "90", 4, "70", 1, "10", -200, "20", -400, "10", 2200, "20", -400,
+     "10", 2200, "20", 0, "10", -200, "20", 0)
+bput("0", "ENDSEC", "0", "EOF")
+model { mu = 0.65 }
+local ins = import { file = write(".dxf", table.concat(B, "\n") .. "\n"), scale = 0.001, support = "GROUND" }
+T.eq(#ins, 34, "DXF INSERT: 33 stones placed by INSERT and MINSERT, nested, and the ground")
+T.ok(#ins.skipped == 1 and ins.skipped[1]:find("TEXT in block 'brick'", 1, true), "DXF INSERT: a block's text listed once",
+     tostring(ins.skipped))
+T.eq(ins.names[1], "stones", "DXF INSERT: a block's polyline on layer 0 takes the INSERT's layer")
+load { live = "horizontal" }
+T.near(solve { flow = "associative" }.alpha, want, 1e-9, "DXF INSERT: the alpha of wall{}'s W1")
+-- a stone of a nested block that is no block: the message names the
+-- blocks and the lines that place it
+model {}
+local bad = table.concat(B, "\n"):gsub("10\n400\n20\n175\n10\n0\n20\n175\n", "10\n800\n20\n0\n10\n1200\n20\n0\n", 1)
+T.raises(function() import { file = write(".dxf", bad .. "\n"), scale = 0.001, support = "GROUND" } end,
+         "DXF INSERT: a flat brick refused", "(layer 'stones', block 'brick' placed at line", "zero area")
+T.eq(stats().blocks + stats().supports, 0, "DXF INSERT: refused, the model as it was")
 
 for _, f in ipairs(files) do os.remove(f) end
 T.done()
