@@ -263,7 +263,7 @@ return function(M)
 
     local blocks, names = {}, {}
     for i, s in ipairs(shapes) do
-      local fields = { support = marks[i], density = t.density }
+      local fields = { support = marks[i], density = t.density, resolution = resolution }
       if solid then
         local d = 0
         for _, p in ipairs(s.points) do

@@ -7,11 +7,15 @@
 
 void bl_contact_tolerances(const bl_model *m, double *tol, double *gap)
 {
-    double typical = 0.0;
-    for (int i = 0; i < m->nblocks; i++)
+    double typical = 0.0, resolution = 0.0;
+    for (int i = 0; i < m->nblocks; i++) {
         typical += m->dim == 3 ? cbrt(m->blocks[i].volume) : sqrt(m->blocks[i].area);
+        resolution = fmax(resolution, m->blocks[i].resolution);
+    }
     if (m->nblocks) typical /= m->nblocks;
-    *tol = m->contact_tol > 0.0 ? m->contact_tol : 1e-8 * bl_model_size(m);
+    /* by default, faces that meet to the last digit of a file's numbers
+     * (doc/guide.md, import) touch */
+    *tol = m->contact_tol > 0.0 ? m->contact_tol : fmax(1e-8 * bl_model_size(m), 10.0 * resolution);
     *gap = m->contact_gap > 0.0 ? m->contact_gap : 1e-2 * typical;
     if (m->contact_gap < 0.0) *gap = 0.0; /* near-miss check switched off */
     if (*gap < *tol) *gap = *tol;

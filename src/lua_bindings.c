@@ -435,6 +435,7 @@ static int block_3d(lua_State *L, bl_model *m)
     }
     int support = boolean_field(L, 2, "block", "support", 0);
     double rho = number_field(L, 2, "block", "density", 0.0, POSITIVE);
+    double resolution = number_field(L, 2, "block", "resolution", 0.0, NONNEG);
     bl_polyhedron solid;
     bl_error err;
     if (hull) {
@@ -481,14 +482,15 @@ static int block_3d(lua_State *L, bl_model *m)
         if (bl_polyhedron_make(&solid, v, nv, fs, fi, nf)) return fail(L, "block: out of memory");
     }
     if (bl_model_add_solid(m, &solid, support, rho, &err)) return fail(L, "%s", err.msg);
+    m->blocks[m->nblocks - 1].resolution = resolution;
     lua_pushinteger(L, m->nblocks);
     return 1;
 }
 
 static int model_block(lua_State *L)
 {
-    static const char *const fields[] = {"vertices", "support", "density", "thickness",
-                                         "faces",    "points",  NULL};
+    static const char *const fields[] = {"vertices", "support", "density",    "thickness",
+                                         "faces",    "points",  "resolution", NULL};
     bl_model *m = check_model(L, 1);
     check_fields(L, 2, "block", fields, 0);
     if (m->dim == 3) return block_3d(L, m);
@@ -512,9 +514,11 @@ static int model_block(lua_State *L)
     int support = boolean_field(L, 2, "block", "support", 0);
     double rho = number_field(L, 2, "block", "density", 0.0, POSITIVE);
     double th = number_field(L, 2, "block", "thickness", 0.0, POSITIVE);
+    double resolution = number_field(L, 2, "block", "resolution", 0.0, NONNEG);
     bl_error err;
     if (bl_model_add_block(m, v, nv, support, rho, th, &err))
         return fail(L, "%s", err.msg); /* "block N: ..." */
+    m->blocks[m->nblocks - 1].resolution = resolution;
     lua_pushinteger(L, m->nblocks);
     return 1;
 }

@@ -24,6 +24,7 @@ typedef struct bl_block {
     bl_vec2 centroid;
     double weight;       /* density * area * thickness, or density * volume */
     double box[4];       /* bounding box (2D) */
+    double resolution;   /* the last digit its coordinates were written to (import); 0 exact */
     /* 3D */
     bl_polyhedron solid; /* owned, faces outward */
     double volume;

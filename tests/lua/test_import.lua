@@ -283,7 +283,8 @@ T.near(current():block_info(rb[1]).volume, 0.072, 1e-5, "OBJ at 6 decimals: a tu
 T.near(rb.resolution, 1e-6, 1e-12, "OBJ at 6 decimals: .resolution 1e-6")
 -- two such stones stacked on a slab, written with 6 decimals and with 17
 -- digits: the faces that meet lie in one plane only to the rounding, and
--- contacts{ tol = 10 * resolution } finds them; the same alpha, to 1e-5
+-- the detection's tolerance, 10 times the resolution by default for blocks
+-- read from such a file, finds them; the same alpha, to 1e-5
 local function stack(fmt)
   local out = {}
   for _, s in ipairs { { "ground", -1, -1, -0.5, 3, 3, 0.5 }, { "s1", 0, 0, 0, 0.8, 0.3, 0.3 },
@@ -299,11 +300,13 @@ local function stack(fmt)
   end
   model { dim = 3, mu = 0.6 }
   local b = import { file = write(".obj", table.concat(out, "\n")), support = "ground" }
-  if fmt == "%.6f" then contacts { tol = 10 * b.resolution } end
+  if fmt == "%.6f" then
+    T.near(stats().tol, 10 * b.resolution, 1e-12, "OBJ at 6 decimals: the detection's tolerance 10 times its resolution")
+  end
   load { live = "horizontal", direction = turned { 0, 1, 0 } }
   return solve { flow = "associative" }.alpha
 end
-T.near(stack("%.6f"), stack("%.17g"), 1e-5, "OBJ at 6 decimals: stacked turned stones meet with contacts{ tol = 10 resolution }")
+T.near(stack("%.6f"), stack("%.17g"), 1e-5, "OBJ at 6 decimals: stacked turned stones meet, the tolerance from the file's resolution")
 -- the L of part 2 turned the same way: not convex, its bent faces cut
 -- into triangles; volume 3 to the rounding
 local lv, lf = {}, {}
