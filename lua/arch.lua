@@ -83,11 +83,6 @@ return function(M, load_ratio)
       fail(("field 'angle' leaves no room for the springings: with this thickness it must be below %.4g degrees")
         :format(room))
     end
-    local c = t.centre or { 0, 0 }
-    if type(c) ~= "table" or type(c[1]) ~= "number" or type(c[2]) ~= "number"
-        or not (math.abs(c[1]) < math.huge and math.abs(c[2]) < math.huge) then
-      fail("field 'centre' must be a point {x, y} of two finite numbers")
-    end
     local fill = t.fill
     if fill ~= nil then
       if type(fill) ~= "table" then fail("field 'fill' must be a table { level = h, density = d }") end
@@ -112,6 +107,12 @@ return function(M, load_ratio)
     end
     local m = M.current()
     local solid = m and m:dim() == 3
+    local c = t.centre or { 0, 0 }
+    if type(c) ~= "table" or type(c[1]) ~= "number" or type(c[2]) ~= "number" or c[3] ~= nil
+        or not (math.abs(c[1]) < math.huge and math.abs(c[2]) < math.huge) then
+      fail(("field 'centre' must be a point %s of two finite numbers%s"):format(solid and "{x, z}" or "{x, y}",
+           solid and " (the vault runs along y, from 0 to 'length')" or ""))
+    end
     local length, segments = t.length, t.segments or 1
     if solid then
       length = positive(t, "length")

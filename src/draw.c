@@ -415,8 +415,13 @@ static void layout(pic *P, const bl_solution *s, int width, double azimuth, doub
         snprintf(value, sizeof value, "alpha = %.5g", s->alpha);
     else if (!isnan(s->alpha_min))
         snprintf(value, sizeof value, "no alpha, held up from alpha_min = %.5g", s->alpha_min);
+    /* as print(r): an answer is verified or says it is not */
+    const char *check = s->verified ? ", verified"
+                        : (s->status == BL_OPTIMAL || s->status == BL_UNSTABLE) && isfinite(s->alpha)
+                            ? ", NOT verified"
+                            : "";
     snprintf(P->caption, sizeof P->caption, "%s  (%s, %s flow, %s%s)", value, name ? name : "?",
-             s->flow, s->method, s->verified ? ", verified" : "");
+             s->flow, s->method, check);
     P->has_legend = P->m && P->k > 0.0;
 
     /* text widths need a cairo context; a 1x1 image gives the same metrics
@@ -503,10 +508,25 @@ static void joint3(cairo_t *cr, const pic *P, int i, int e, int vertex)
     int side = anchor3(P, f), e1 = (e + 1) % f->np;
     bl_vec2 a = dev(P, project(P, moved3(P, side, f->poly[e])));
     bl_vec2 b = dev(P, project(P, moved3(P, side, f->poly[e1])));
-    if (vertex) hinge_dot(cr, P->mark, a);
+    /* a hinge seen end on (shorter than a dot) is a dot */
+    if (vertex || (s->state[i] == BL_ROCKING && bl_v2_norm(bl_v2_sub(b, a)) < 5.0 * P->mark))
+        hinge_dot(cr, P->mark, vertex ? a : bl_v2_scale(bl_v2_add(a, b), 0.5));
     else if (s->state[i] == BL_SLIDING) sliding_line(cr, P->mark, a, b);
     else if (s->state[i] == BL_SEPARATING) separating_line(cr, P->mark, a, b);
     else hinge_line(cr, P->mark, a, b);
+}
+
+/* The depth of face k of block b where it is seen edge on (its normal
+ * across the line of sight, to round-off), else NAN: a marker on such a
+ * face lies on the block's outline, in sight. */
+static void face_plane(const pic *P, int b, int k, int unmoved, bl_vec3 *c, bl_vec3 *nrm);
+
+static double edge_on(const pic *P, int b, int k)
+{
+    bl_vec3 c, nrm;
+    face_plane(P, b, k, 0, &c, &nrm);
+    double nn = bl_v3_norm(nrm);
+    return nn > 0.0 && fabs(bl_v3_dot(nrm, P->eye)) <= 1e-9 * nn ? bl_v3_dot(c, P->eye) : NAN;
 }
 
 /* The pieces of joint i's marker (see joint3) whose point (an edge's
@@ -537,18 +557,30 @@ static int joint_pieces(const pic *P, int i, const int *face_off, const double *
             } else if (vertex) {
                 continue;
             }
-            bl_vec3 q = vertex ? f->poly[e] : bl_v3_scale(bl_v3_add(f->poly[e], f->poly[e1]), 0.5);
+            /* an edge by its midpoint or either end (seen end on, a
+             * hinge's midpoint lies only on faces seen edgewise), in front
+             * of every face that holds one */
+            bl_vec3 q[3] = {vertex ? f->poly[e] : bl_v3_scale(bl_v3_add(f->poly[e], f->poly[e1]), 0.5),
+                            f->poly[e], f->poly[e1]};
             double d = -INFINITY;
-            int seen = 0, blk[2] = {side, side == f->a ? f->b : f->a};
-            for (int j = 0; j < 2; j++) {
-                const bl_polyhedron *S = &m->blocks[blk[j]].solid;
-                for (int k = 0; k < S->nf; k++) {
-                    double dk = depth[face_off[blk[j]] + k];
-                    if (isnan(dk) || !bl_polyhedron_on_face(S, k, q, 1e-6 * size)) continue;
-                    seen |= j == 0;
-                    d = fmax(d, dk);
+            int seen = 0, rim = 0, blk[2] = {side, side == f->a ? f->b : f->a};
+            for (int c = 0; c < (vertex ? 1 : 3); c++)
+                for (int j = 0; j < 2; j++) {
+                    const bl_polyhedron *S = &m->blocks[blk[j]].solid;
+                    for (int k = 0; k < S->nf; k++) {
+                        double dk = depth[face_off[blk[j]] + k];
+                        int edgewise = isnan(dk);
+                        if (edgewise) dk = edge_on(P, blk[j], k);
+                        if (isnan(dk) || !bl_polyhedron_on_face(S, k, q[c], 1e-6 * size)) continue;
+                        seen |= j == 0;
+                        rim |= j == 0 && edgewise;
+                        d = fmax(d, dk);
+                    }
                 }
-            }
+            /* on the outline of the block it rides with: in front of that
+             * block's faces (a base slab's front face hid a toe's hinge) */
+            for (int k = 0; rim && k < m->blocks[side].solid.nf; k++)
+                if (!isnan(depth[face_off[side] + k])) d = fmax(d, depth[face_off[side] + k]);
             if (!seen) continue;
             if (d > -INFINITY) F[n++] = (face3){i, -1 - (2 * e + vertex), d + 1e-9 * (1.0 + fabs(d)), 0.0};
         }

@@ -602,9 +602,12 @@ static int model_interface(lua_State *L)
         int r = bl_polygon3_check(s.p3, n, tol, &nrm, &area);
         if (r == -1) return fail(L, "interface: field 'points' encloses no area (on a line?)");
         if (r == -2) return fail(L, "interface: field 'points' is not a convex polygon in order");
+        if (r == -3)
+            return fail(L, "interface: field 'points' do not lie in one plane (within tol = %.3g)",
+                        tol);
         if (r < 0)
             return fail(L, "interface: field 'points' point %d lies off the polygon's plane "
-                           "(by more than tol = %.3g)", -r - 1, tol);
+                           "(by more than tol = %.3g)", -r - 3, tol);
         s.npoints = n;
     } else if (field(L, 2, "points")) {
         if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2)

@@ -172,17 +172,44 @@ double bl_polyhedron_depth(const bl_polyhedron *p, bl_vec3 q)
     return fabs(omega) > 2.0 * M_PI ? d : -d;
 }
 
+/* The unit normal of the plane of the first three corners (but corner
+ * skip) that make a triangle; 0 when they all lie on a line. */
+static int corner_plane(const bl_vec3 *p, int n, int skip, double tol, bl_vec3 *nu)
+{
+    int a = skip == 0 ? 1 : 0, b = skip == 0 || skip == 1 ? 2 : 1;
+    *nu = (bl_vec3){0, 0, 0};
+    for (int k = b + 1; k < n && !(bl_v3_norm(*nu) > tol * tol); k++)
+        if (k != skip) *nu = bl_v3_cross(bl_v3_sub(p[b], p[a]), bl_v3_sub(p[k], p[a]));
+    double len = bl_v3_norm(*nu);
+    if (!(len > tol * tol)) return 0;
+    *nu = bl_v3_scale(*nu, 1.0 / len);
+    return 1;
+}
+
+/* The first corner (but skip) farther than tol from the plane nu through
+ * corner o, or -1. */
+static int off_plane(const bl_vec3 *p, int n, int skip, bl_vec3 nu, int o, double tol)
+{
+    for (int i = 0; i < n; i++)
+        if (i != skip && fabs(bl_v3_dot(nu, bl_v3_sub(p[i], p[o]))) > tol) return i;
+    return -1;
+}
+
 int bl_polygon3_check(const bl_vec3 *p, int n, double tol, bl_vec3 *normal, double *area)
 {
-    /* the plane of the first corner that makes a triangle with p0 and p1 */
-    bl_vec3 nu = {0, 0, 0};
-    for (int k = 2; k < n && !(bl_v3_norm(nu) > tol * tol); k++)
-        nu = bl_v3_cross(bl_v3_sub(p[1], p[0]), bl_v3_sub(p[k], p[0]));
-    double len = bl_v3_norm(nu);
-    if (!(len > tol * tol)) return -1;
-    nu = bl_v3_scale(nu, 1.0 / len);
-    for (int i = 2; i < n; i++)
-        if (fabs(bl_v3_dot(nu, bl_v3_sub(p[i], p[0]))) > tol) return -(i + 2);
+    bl_vec3 nu;
+    if (!corner_plane(p, n, -1, tol, &nu)) return -1;
+    if (off_plane(p, n, -1, nu, 0, tol) >= 0) {
+        /* the one corner without which the others lie in one plane, if
+         * there is just one (any three corners do) */
+        int found = -1, count = 0;
+        for (int k = 0; n > 4 && k < n; k++) {
+            bl_vec3 mu;
+            if (corner_plane(p, n, k, tol, &mu) && off_plane(p, n, k, mu, k == 0, tol) < 0)
+                found = k, count++;
+        }
+        return count == 1 ? -(found + 4) : -3;
+    }
     /* convex: every corner turns the same way (or goes straight on) */
     int pos = 0, neg = 0;
     for (int i = 0; i < n; i++) {
@@ -195,7 +222,7 @@ int bl_polygon3_check(const bl_vec3 *p, int n, double tol, bl_vec3 *normal, doub
     bl_vec3 s = {0, 0, 0};
     for (int i = 1; i + 1 < n; i++)
         s = bl_v3_add(s, bl_v3_cross(bl_v3_sub(p[i], p[0]), bl_v3_sub(p[i + 1], p[0])));
-    len = bl_v3_norm(s);
+    double len = bl_v3_norm(s);
     if (!(len > tol * tol)) return -1;
     *normal = bl_v3_scale(s, 1.0 / len);
     *area = 0.5 * len;

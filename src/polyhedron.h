@@ -73,8 +73,10 @@ int bl_polyhedron_pierced(const bl_polyhedron *p, bl_vec3 a, bl_vec3 b, double t
 
 /* Checks a polygon of n points in space (in order, either way round):
  * returns 0 with its unit normal (right hand along the order) and area;
- * -1 when it has no area, -2 when it is not convex, or -(k + 1) when its
- * point k (1-based) lies off its plane by more than tol. */
+ * -1 when it has no area, -2 when it is not convex, -(k + 3) when its
+ * point k (1-based) alone lies off the plane of the others by more than
+ * tol, or -3 when the points lie in no plane and no one point is to blame
+ * (always so for 4 points: any 3 lie in a plane). */
 int bl_polygon3_check(const bl_vec3 *p, int n, double tol, bl_vec3 *normal, double *area);
 
 /* Bounding box: box[0..5] = xmin, ymin, zmin, xmax, ymax, zmax. */

@@ -167,6 +167,8 @@ local bad = {
   { "arch", function() arch { n = 0, radius = 1, thickness = 0.1 } end, "arch", "'n'" },
   { "arch", function() arch { n = 1, radius = 1, thickness = 0.1 } end, "arch", "'n'", "180 degrees" },
   { "arch", function() arch { n = 3, radius = 1, thickness = 0.1, centre = { 0 } } end, "arch", "'centre'" },
+  { "arch", function() arch { n = 3, radius = 1, thickness = 0.1, centre = { 7, 5, 3 } } end, "arch", "'centre'",
+    "{x, y} of two" },
   { "arch", function() arch { n = 8, radius = 1, thickness = 0.1, angle = 360 } end, "arch", "'angle'",
     "springings" },
   { "arch", function() arch { n = 5, radius = 1, thickness = 0.1, density = -1 } end, "arch", "'density'" },
@@ -270,6 +272,20 @@ T.raises(function()
                                      { -0.5, -0.5, 0 } } }
 end, "interface{ points } with a corner twice", "interface: field 'points' point 5 repeats point 1")
 T.near(solve { flow = "associative" }.alpha, 0.6, 1e-9, "after the refused joint: the cube slides at mu = 0.6")
+T.raises(function() arch { n = 5, radius = 1, thickness = 0.2, length = 1, centre = { 7, 5, 3 } } end,
+         "arch{} in 3D: a centre of three numbers (it took {7, 5} as x, z)", "arch: field 'centre'", "{x, z}",
+         "runs along y")
+-- Corners off one plane (a tester found point 4 blamed for point 1): of 4
+-- corners none is to blame, any 3 lie in a plane; of 5, the one lifted.
+T.raises(function()
+  interface { cube, slab, points = { { -0.5, -0.5, 0.01 }, { 0.5, -0.5, 0 }, { 0.5, 0.5, 0 }, { -0.5, 0.5, 0 } } }
+end, "interface{ points }: 4 corners in no plane", "interface: field 'points' do not lie in one plane")
+for k = 1, 5 do
+  local pts = { { -0.5, -0.5, 0 }, { 0.5, -0.5, 0 }, { 0.5, 0.5, 0 }, { 0, 0.6, 0 }, { -0.5, 0.5, 0 } }
+  pts[k][3] = 0.01
+  T.raises(function() interface { cube, slab, points = pts } end, ("interface{ points }: corner %d of 5 lifted"):format(k),
+           ("interface: field 'points' point %d lies off the polygon's plane"):format(k))
+end
 -- Found by a tester (2026-11-28): each read wrongly or crashed before.
 do
   -- a model whose finalizer has run (by hand here; a finalizer can also

@@ -432,7 +432,7 @@ T.near(solve { flow = "nonassociative", progress = false }.alpha, 0.5, 1e-8,
 for _, case in ipairs {
   { { { 0, 0, 0 }, { 1, 0, 0 } }, "3 to 16 points" },
   { { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } }, "no area" },
-  { { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0.3 } }, "point 4 lies off" },
+  { { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0.3 } }, "do not lie in one plane" },
   { { { 0, 0, 0 }, { 1, 1, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, "not a convex polygon" },
   { { { 0, 0, 0 }, { 1, 0 }, { 1, 1, 0 } }, "point 2 must be a point {x, y, z}" },
 } do
