@@ -213,7 +213,8 @@ return function(M)
       out[#out + 1] = ("%-22s %-6s %-10s %8.3f %8d %5s %8s %8s %8s %8s %-6s %7s %7s  %s"):format(
         row.label:sub(1, 22), r.flow == "associative" and "assoc" or "non-a",
         answered and ("%.6f"):format(r.alpha) or r.status:sub(1, 10), r.timings.total,
-        r.iterations, r.method == "mpec" and "-" or tostring(r.lps or 1), g(e.equilibrium), g(e.yield), g(e.complementarity),
+        r.iterations, r.method == "mpec" and "-" or tostring(r.lps or r.cone and r.cone.rounds or 1),
+        g(e.equilibrium), g(e.yield), g(e.complementarity),
         g(flow_rule(e)), tostring(r.verified), row.agreement and ("%.4f"):format(row.agreement) or "-",
         row.differing and tostring(row.differing) or "-", table.concat(notes, "; ")):gsub("%s+$", "")
     end

@@ -175,7 +175,7 @@ return function(M)
     if solid and t.thickness ~= nil then fail("field 'thickness' is for 2D models") end
     for _, k in ipairs { "density", "thickness" } do
       if t[k] ~= nil and not (finite(t[k]) and t[k] > 0) then
-        fail(("field '%s' must be a positive number, got %s"):format(k, tostring(t[k])))
+        fail(("field '%s' must be a positive number, got %s"):format(k, report.show(t[k])))
       end
     end
     local support = t.support

@@ -59,7 +59,7 @@ return function(M, fields)
       for j = 1, 4 do
         if type(o[j]) ~= "number" or o[j] ~= o[j] then
           fail(fn, ("field 'openings' entry %d must be {x0, x1, c0, c1} of numbers, got %s as number %d")
-            :format(i, tostring(o[j]), j))
+            :format(i, report.show(o[j]), j))
         end
       end
       if not (o[1] < o[2] and o[3] <= o[4] and o[1] >= lo and o[2] <= hi) then
@@ -157,7 +157,7 @@ return function(M, fields)
       local v = math.tointeger(n[i])
       if not v or v < 2 then
         fail("corner", ("field 'lengths' entry %d must be an integer of at least 2 blocks, got %s")
-          :format(i, tostring(n[i])))
+          :format(i, report.show(n[i])))
       end
       n[i] = v
     end
@@ -190,7 +190,7 @@ return function(M, fields)
     local courses = positive_integer("pier", t, "courses")
     local H = t.height
     if type(H) ~= "number" or not (H > 0) or H == math.huge then
-      fail("pier", ("field 'height' must be a positive number, got %s"):format(tostring(H)))
+      fail("pier", ("field 'height' must be a positive number, got %s"):format(report.show(H)))
     end
     local a, b = sz[1], sz[2]
     local blocks, rho = {}, t.density
@@ -219,7 +219,7 @@ return function(M, fields)
     local pattern = t.pattern or "english"
     if pattern ~= "english" and pattern ~= "header" and pattern ~= "stretcher" then
       fail("bond", ("field 'pattern' must be \"english\", \"header\" or \"stretcher\", got %s")
-        :format(tostring(pattern)))
+        :format(report.show(pattern)))
     end
     local openings = openings_field("bond", t, 0, n, courses)
     -- a course as pieces {x0, x1, y0, y1} in units of L, then cut by the

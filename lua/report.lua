@@ -6,7 +6,10 @@ local Result = {}
 -- "s" for a count other than one: "1 block", "2 blocks".
 function report.plural(n) return n == 1 and "" or "s" end
 -- A value as a message shows it: strings quoted, so that "1" is not 1.
-function report.show(v) return type(v) == "string" and ("%q"):format(v) or tostring(v) end
+function report.show(v)
+  if type(v) == "string" then return ("%q"):format(v) end
+  return v ~= v and "nan" or tostring(v) -- C libraries print NaN as "-nan"
+end
 local plural = report.plural
 report.Result = Result
 
@@ -174,6 +177,17 @@ function Result.__tostring(r)
   else
     say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
         r.lp, r.iterations, size.rows, size.columns)
+  end
+  if r.cone then -- 3D: alpha depends on the pyramid that stands for Coulomb's cone
+    local c, bound = r.cone, ""
+    if r.flow == "associative" and c.kind ~= "adaptive" then
+      bound = c.kind == "inscribed" and " (the cone's alpha is at least this)" or " (the cone's alpha is at most this)"
+    end
+    if c.kind == "adaptive" then
+      say("  friction cone as a pyramid from %d facets, edges added along the slip in %d LPs", c.facets, c.rounds)
+    else
+      say("  friction cone as a pyramid of %d facets, %s%s", c.facets, c.kind, bound)
+    end
   end
   local line = ("  %d block%s, %d support%s, %d interface%s"):format(size.blocks, plural(size.blocks),
     size.supports, plural(size.supports), size.interfaces, plural(size.interfaces))

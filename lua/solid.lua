@@ -22,13 +22,14 @@ return function(M)
   local function number_list(fn, t, k, n, positive)
     local v = t[k]
     if type(v) ~= "table" or #v ~= n then
-      fail(fn, ("field '%s' must be a list of %d numbers, got %s"):format(k, n, type(v)), 4)
+      fail(fn, ("field '%s' must be a list of %d numbers, got %s"):format(k, n,
+           type(v) == "table" and ("%d"):format(#v) or type(v)), 4)
     end
     for i = 1, n do
       if type(v[i]) ~= "number" or v[i] ~= v[i] or math.abs(v[i]) == math.huge
          or (positive and not (v[i] > 0)) then
         fail(fn, ("field '%s' entry %d must be a %snumber, got %s"):format(k, i,
-             positive and "positive " or "finite ", tostring(v[i])), 4)
+             positive and "positive " or "finite ", report.show(v[i])), 4)
       end
     end
     return v
@@ -37,7 +38,12 @@ return function(M)
   local function check(fn, t, allowed)
     if type(t) ~= "table" then fail(fn, "expects a table of named fields, got " .. type(t), 4) end
     for k in pairs(t) do
-      if not allowed[k] then fail(fn, ("unknown field '%s'"):format(tostring(k)), 4) end
+      if not allowed[k] then
+        local names = {}
+        for name in pairs(allowed) do names[#names + 1] = name end
+        table.sort(names)
+        fail(fn, ("unknown field '%s' (fields: %s)"):format(tostring(k), table.concat(names, ", ")), 4)
+      end
     end
     local m = M.current()
     if not m then fail(fn, "no current model; start one with model{ dim = 3 }", 4) end
@@ -49,7 +55,7 @@ return function(M)
     local v = math.type(t[k]) and math.tointeger(t[k])
     if not v or v < (min or 1) then
       fail(fn, ("field '%s' must be an integer of at least %d, got %s"):format(k, min or 1,
-           tostring(t[k])), 4)
+           report.show(t[k])), 4)
     end
     return v
   end
@@ -84,7 +90,7 @@ return function(M)
                        centre = true, density = true })
     local function positive(k)
       if type(t[k]) ~= "number" or not (t[k] > 0) or t[k] == math.huge then
-        fail("dome", ("field '%s' must be a positive number, got %s"):format(k, tostring(t[k])))
+        fail("dome", ("field '%s' must be a positive number, got %s"):format(k, report.show(t[k])))
       end
       return t[k]
     end
@@ -92,7 +98,7 @@ return function(M)
       local v = math.type(t[k]) and math.tointeger(t[k])
       if not v or v < least then
         fail("dome", ("field '%s' must be an integer of at least %d, got %s"):format(k, least,
-             tostring(t[k])))
+             report.show(t[k])))
       end
       return v
     end

@@ -33,9 +33,11 @@ return function(M)
         or not (unit[1] > 0 and unit[2] > 0) then
       fail("field 'unit' must be {L, H} with two positive numbers")
     end
+    local m = M.current()
+    local solid = m and m:dim() == 3
     local origin = t.origin or { 0, 0 }
     if type(origin) ~= "table" or #origin ~= 2 or not finite(origin[1]) or not finite(origin[2]) then
-      fail("field 'origin' must be a point {x, y} of two finite numbers")
+      fail(("field 'origin' must be a point %s of two finite numbers"):format(solid and "{x, z}" or "{x, y}"))
     end
     if t.base ~= nil and type(t.base) ~= "boolean" then
       fail("field 'base' must be true or false, got " .. tostring(t.base))
@@ -59,13 +61,11 @@ return function(M)
       width = math.max(width, len)
     end
     if not any then fail("field 'courses' has no block: every entry is a gap") end
-    local m = M.current()
-    local solid = m and m:dim() == 3
     if solid then
+      if t.thickness ~= nil then fail("field 'thickness' is for 2D models; give 'depth' in 3D") end
       if type(t.depth) ~= "number" or not (t.depth > 0) then
         fail("field 'depth' (the wall's thickness, along y) must be a positive number in a 3D model")
       end
-      if t.thickness ~= nil then fail("field 'thickness' is for 2D models; give 'depth' in 3D") end
     elseif t.depth ~= nil then
       fail("field 'depth' is for 3D models (model{ dim = 3 })")
     end

@@ -248,6 +248,18 @@ T.eq(message(function() pier { size = { 1, 1 }, courses = 2, height = 0.5, densi
      "pier: field 'density' must be > 0, got -1", "pier{ density = -1 }: pier names its field")
 T.eq(message(function() wall { courses = { { 1, 1 } }, depth = 0.2, density = "heavy" } end),
      "wall: field 'density' must be a number, got string", "3D wall{ density = 'heavy' }: wall names its field")
+-- Found by a 3D tester (2026-11-28): messages that said too little
+T.eq(message(function() box { size = { 1, 1 } } end), "box: field 'size' must be a list of 3 numbers, got 2",
+     "box{ size } of 2 numbers: the count given")
+T.eq(message(function() box { size = { 1, 0 / 0, 1 } } end), "box: field 'size' entry 2 must be a positive number, got nan",
+     "box{ size } with NaN: 'nan', not the C library's '-nan'")
+T.eq(message(function() facade { colour = "red" } end),
+     "facade: unknown field 'colour' (fields: courses, density, length, openings, returns, thickness, unit)",
+     "facade{ colour }: the fields listed")
+T.eq(message(function() wall { courses = { { 1 } }, thickness = 0.2 } end),
+     "wall: field 'thickness' is for 2D models; give 'depth' in 3D", "3D wall{ thickness }: a 2D field")
+T.eq(message(function() wall { courses = { { 1 } }, depth = 0.2, origin = { 1, 2, 3 } } end),
+     "wall: field 'origin' must be a point {x, z} of two finite numbers", "3D wall{ origin }: {x, z}")
 model {}
 T.eq(message(function() arch { span = 2, thickness = 0.2, n = 5, density = -1 } end),
      "arch: field 'density' must be > 0, got -1", "arch{ density = -1 }: arch names its field")

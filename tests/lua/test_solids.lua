@@ -347,6 +347,9 @@ for _, case in ipairs { { 4, "inscribed", 1 / math.sqrt(2) }, { 4, "circumscribe
   T.near(r.alpha, case[3] * 0.6 * 2 * 1 / math.sqrt(2), 1e-9,
          ("pure torque on a square contact, %d facets %s: %.4f x mu N a / sqrt 2"):format(case[1],
            case[2], case[3]))
+  T.ok(tostring(r):find(("friction cone as a pyramid of %d facets, %s (the cone's alpha is at %s this)"):format(
+       case[1], case[2], case[2] == "inscribed" and "least" or "most"), 1, true),
+       ("print(r) names the pyramid: %d facets %s"):format(case[1], case[2]))
 end
 
 -- the adaptive cone: edges added along the slip reach the exact cone's
