@@ -36,6 +36,8 @@
 --   (1 = the lowest), cutting the bricks at its jambs; the course above
 --   spans it as it is.  On a fixed base slab.  Returns the block numbers
 --   and the base.
+-- Each of them also takes at = {x, y, z}, where its origin goes (the base
+-- slab moves with it), and base = false, no base slab (nil returned).
 local report = require "blocklim.report"
 
 return function(M, fields)
@@ -106,9 +108,29 @@ return function(M, fields)
     return th
   end
 
+  -- fields 'at' (where the assemblage's origin goes, default {0, 0, 0})
+  -- and 'base' (false: no base slab) of command fn: its box{} and its base
+  -- slab's (nil without one)
+  local function placement(fn, t)
+    local at = t.at ~= nil and number_list(fn, t, "at", 3) or { 0, 0, 0 }
+    if t.base ~= nil and type(t.base) ~= "boolean" then
+      fail(fn, "field 'base' must be true or false, got " .. report.show(t.base))
+    end
+    local function box(f)
+      f.at = { f.at[1] + at[1], f.at[2] + at[2], f.at[3] + at[3] }
+      return M.box(f)
+    end
+    local function base(size, centre)
+      if t.base == false then return nil end
+      return box { size = size, at = centre, support = true }
+    end
+    return box, base
+  end
+
   function M.facade(t)
     check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true,
-                         openings = true, thickness = true })
+                         openings = true, thickness = true, at = true, base = true })
+    local box, base_slab = placement("facade", t)
     local n, m = positive_integer("facade", t, "length"), positive_integer("facade", t, "returns")
     local courses = positive_integer("facade", t, "courses")
     if n < 2 then fail("facade", "field 'length' must be at least 2 blocks") end
@@ -119,7 +141,7 @@ return function(M, fields)
     local openings = openings_field("facade", t, th / L, n - th / L, courses)
     local W, D = n * L, th + m * L
     local blocks, rho = {}, t.density
-    local function put(size, at) blocks[#blocks + 1] = M.box { size = size, at = at, density = rho } end
+    local function put(size, at) blocks[#blocks + 1] = box { size = size, at = at, density = rho } end
     for c = 0, courses - 1 do
       local z = c * H
       -- the facade's blocks, from pieces {x0, x1} in units of L
@@ -146,12 +168,13 @@ return function(M, fields)
         front(0.5, n - 1, th / L)
       end
     end
-    local base = M.box { size = { W + 2 * th, D + 2 * th, H }, at = { W / 2, D / 2, -H }, support = true }
-    return report.blocks(blocks), base
+    return report.blocks(blocks), base_slab({ W + 2 * th, D + 2 * th, H }, { W / 2, D / 2, -H })
   end
 
   function M.corner(t)
-    check("corner", t, { lengths = true, courses = true, unit = true, density = true, thickness = true })
+    check("corner", t, { lengths = true, courses = true, unit = true, density = true, thickness = true, at = true,
+                         base = true })
+    local box, base_slab = placement("corner", t)
     local n = number_list("corner", t, "lengths", 2, true)
     for i = 1, 2 do
       local v = math.tointeger(n[i])
@@ -166,7 +189,7 @@ return function(M, fields)
     local L, H = u[1], u[2]
     local th = thickness("corner", t, L, 1)
     local blocks, rho = {}, t.density
-    local function put(size, at) blocks[#blocks + 1] = M.box { size = size, at = at, density = rho } end
+    local function put(size, at) blocks[#blocks + 1] = box { size = size, at = at, density = rho } end
     for c = 0, courses - 1 do
       local z = c * H
       if c % 2 == 0 then -- the x panel runs through the corner
@@ -180,12 +203,12 @@ return function(M, fields)
       end
     end
     local X, Y = n[1] * L, n[2] * L + th
-    local base = M.box { size = { X + 2 * th, Y + 2 * th, H }, at = { X / 2, Y / 2, -H }, support = true }
-    return report.blocks(blocks), base
+    return report.blocks(blocks), base_slab({ X + 2 * th, Y + 2 * th, H }, { X / 2, Y / 2, -H })
   end
 
   function M.pier(t)
-    check("pier", t, { size = true, courses = true, height = true, density = true })
+    check("pier", t, { size = true, courses = true, height = true, density = true, at = true, base = true })
+    local box, base_slab = placement("pier", t)
     local sz = number_list("pier", t, "size", 2, true)
     local courses = positive_integer("pier", t, "courses")
     local H = t.height
@@ -202,16 +225,16 @@ return function(M, fields)
         else -- split across y: two blocks b/2 deep
           size, at = { a, b / 2, H }, { 0, side * b / 4, c * H }
         end
-        blocks[#blocks + 1] = M.box { size = size, at = at, density = rho }
+        blocks[#blocks + 1] = box { size = size, at = at, density = rho }
       end
     end
-    local base = M.box { size = { 2 * a, 2 * b, H }, at = { 0, 0, -H }, support = true }
-    return report.blocks(blocks), base
+    return report.blocks(blocks), base_slab({ 2 * a, 2 * b, H }, { 0, 0, -H })
   end
 
   function M.bond(t)
     check("bond", t, { length = true, courses = true, unit = true, pattern = true, openings = true,
-                       thickness = true, density = true })
+                       thickness = true, density = true, at = true, base = true })
+    local box, base_slab = placement("bond", t)
     local n, courses = positive_integer("bond", t, "length", 2), positive_integer("bond", t, "courses")
     local k = t.thickness == nil and 1 or positive_integer("bond", t, "thickness")
     local u = number_list("bond", t, "unit", 2, true)
@@ -261,13 +284,11 @@ return function(M, fields)
     local blocks = {}
     for c = 1, courses do
       for _, p in ipairs(course(c)) do
-        blocks[#blocks + 1] = M.box { size = { (p[2] - p[1]) * L, (p[4] - p[3]) * L, H },
+        blocks[#blocks + 1] = box { size = { (p[2] - p[1]) * L, (p[4] - p[3]) * L, H },
                                       at = { (p[1] + p[2]) / 2 * L, (p[3] + p[4]) / 2 * L, (c - 1) * H },
                                       density = t.density }
       end
     end
-    local base = M.box { size = { (n + 1) * L, (k + 1) * L, H }, at = { n * L / 2, k * L / 2, -H },
-                         support = true }
-    return report.blocks(blocks), base
+    return report.blocks(blocks), base_slab({ (n + 1) * L, (k + 1) * L, H }, { n * L / 2, k * L / 2, -H })
   end
 end

@@ -1259,14 +1259,17 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
              * on small 2D models (BL_SEQLP_SEARCH_ROWS), where start 0
              * certified up to 21 % above the lowest of 10 restarts (W4 and
              * W5 loaded the other way) and 10 restarts take about half a
-             * second; else restarts only while none has certified
+             * second; on 3D models as small (BL_SEQLP_SEARCH_COLUMNS3),
+             * where one start certified two unbonded leaves 11 % above
+             * their own overturning; else restarts only while none has certified
              * (BL_SEQLP_RETRIES).  Start 0 certifying the associative
              * alpha searches too, whatever unlimited friction gives: a
              * 104-block wall at mu = 1.2 certified its associative 1.0276
              * (unlimited friction: 3.69), where 3 restarts found 0.3809. */
             int at_assoc = r.found && r.best_alpha >= s->alpha_assoc - o->settle * fabs(s->alpha_assoc);
             int search = s->assoc_is_solution || at_assoc ||
-                         (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS);
+                         (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS) ||
+                         (mc->dim == 3 && r.fixed->ncols <= BL_SEQLP_SEARCH_COLUMNS3);
             retry = sliding && o->starts < 0 && !search && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
             starts = !sliding ? 0 : o->starts >= 0 ? o->starts : search ? BL_SEQLP_SEARCH
                                                      : retry ? BL_SEQLP_RETRIES : 0;

@@ -19,7 +19,8 @@ typedef struct bl_seqlp_options {
     int max_lps;           /* cap on the LPs of one start (100) */
     int starts;            /* further starts from random stress states (Eq. 22);
                               < 0: BL_SEQLP_SEARCH on 2D models of at most
-                              BL_SEQLP_SEARCH_ROWS rows and where unlimited
+                              BL_SEQLP_SEARCH_ROWS rows, 3D ones of at most
+                              BL_SEQLP_SEARCH_COLUMNS3 columns, and where unlimited
                               friction gives the associative alpha, else up
                               to BL_SEQLP_RETRIES until one certifies, on
                               models of at most BL_SEQLP_RETRY_ROWS rows */
@@ -54,10 +55,17 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * 0.227542 where 10 restarts reached 0.263736 and 0.209302, the +x
  * answers of the mirrored walls (doc/seqlp.md 2).  Up to
  * BL_SEQLP_SEARCH_ROWS rows (W4 165, W5 183) 10 restarts took 0.4-0.7 s;
- * a 95-block wall of 315 rows took 3.2 s against 0.2 s, and 3D models
- * (a dome of 192 rows: 222 s against 30 s) keep the rules below. */
+ * a 95-block wall of 315 rows took 3.2 s against 0.2 s.  3D models, whose
+ * pyramids make LPs of many more columns per row, search up to
+ * BL_SEQLP_SEARCH_COLUMNS3 columns (a few blocks: two unbonded leaves of
+ * two blocks each, 193 columns, where start 0 certified 0.2222 and the
+ * restarts their overturning at 0.2, in 0.03 s; a pier of 8 blocks, 577
+ * columns, 0.13 s against 0.02 s); larger ones keep the rules below (W1
+ * one block thick, 2,657 columns: 6.4 s against 0.3 s; a dome of 4 x 8,
+ * 2,049: 140 s against 12 s). */
 #define BL_SEQLP_SEARCH 10
 #define BL_SEQLP_SEARCH_ROWS 300
+#define BL_SEQLP_SEARCH_COLUMNS3 1000
 #define BL_SEQLP_RETRY_ROWS 10000
 
 /* A start whose certificates keep failing while alpha has settled is

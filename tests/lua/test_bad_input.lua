@@ -254,8 +254,12 @@ T.eq(message(function() box { size = { 1, 1 } } end), "box: field 'size' must be
 T.eq(message(function() box { size = { 1, 0 / 0, 1 } } end), "box: field 'size' entry 2 must be a positive number, got nan",
      "box{ size } with NaN: 'nan', not the C library's '-nan'")
 T.eq(message(function() facade { colour = "red" } end),
-     "facade: unknown field 'colour' (fields: courses, density, length, openings, returns, thickness, unit)",
+     "facade: unknown field 'colour' (fields: at, base, courses, density, length, openings, returns, thickness, unit)",
      "facade{ colour }: the fields listed")
+T.eq(message(function() pier { size = { 1, 1 }, courses = 2, height = 0.5, at = { 1, 2 } } end),
+     "pier: field 'at' must be a list of 3 numbers, got 2", "pier{ at } of 2 numbers")
+T.eq(message(function() bond { length = 4, courses = 2, unit = { 0.4, 0.1 }, base = "no" } end),
+     "bond: field 'base' must be true or false, got \"no\"", "bond{ base = 'no' }")
 T.eq(message(function() wall { courses = { { 1 } }, thickness = 0.2 } end),
      "wall: field 'thickness' is for 2D models; give 'depth' in 3D", "3D wall{ thickness }: a 2D field")
 T.eq(message(function() wall { courses = { { 1 } }, depth = 0.2, origin = { 1, 2, 3 } } end),

@@ -828,6 +828,22 @@ T.near(pr.alpha, 0.6 / 2.4, 1e-7, "pier 0.6 wide, 2.4 high: alpha = a / h")
 T.ok(pr.verified, "pier: verified")
 T.raises(function() pier { size = { 0.6, 0.6 }, courses = 0, height = 0.3 } end,
          "pier{ courses = 0 } is refused", "pier: field 'courses'")
+-- two such piers 3 apart on one slab (at, base = false): each still rocks
+-- whole, a / h; every block where pier{} at the origin put it, moved by at
+model { dim = 3, mu = 2 }
+box { size = { 5, 2, 0.3 }, at = { 1.5, 0, -0.3 }, support = true }
+local p1, none = pier { size = { 0.6, 0.6 }, courses = 8, height = 0.3, base = false }
+local p2 = pier { size = { 0.6, 0.6 }, courses = 8, height = 0.3, at = { 3, 0.5, 0 }, base = false }
+T.ok(none == nil and stats().supports == 1 and stats().blocks == 32, "pier{ base = false }: no slab, 32 blocks on one")
+local moved = true
+for i, b in ipairs(p2) do
+  local c, d = current():block_info(b).centroid, current():block_info(p1[i]).centroid
+  moved = moved and math.abs(c[1] - d[1] - 3) < 1e-12 and math.abs(c[2] - d[2] - 0.5) < 1e-12
+          and math.abs(c[3] - d[3]) < 1e-12
+end
+T.ok(moved, "pier{ at = {3, 0.5, 0} }: every block moved by at")
+load { live = "horizontal" }
+T.near(solve { flow = "associative" }.alpha, 0.6 / 2.4, 1e-7, "two piers on one slab: alpha = a / h")
 
 -- corner{}: n1 + n2 blocks in the courses where the x panel runs through,
 -- n1 + n2 + 1 (two closers) in the others; the volume is the two panels',
