@@ -37,7 +37,10 @@
 --   spans it as it is.  On a fixed base slab.  Returns the block numbers
 --   and the base.
 -- Each of them also takes at = {x, y, z}, where its origin goes (the base
--- slab moves with it), and base = false, no base slab (nil returned).
+-- slab moves with it), and base = false, no base slab (nil returned);
+-- facade and bond take lintel = b: over each opening below the top
+-- course, one stone through the wall in the course above it, bearing b L
+-- on either side.
 local report = require "blocklim.report"
 
 return function(M, fields)
@@ -97,6 +100,45 @@ return function(M, fields)
     return pieces
   end
 
+  -- field 'lintel' of command fn: a bearing b (in units of L, >= 0), or
+  -- nil.  Each opening whose top course c1 is below the last gets a
+  -- lintel in course c1 + 1 from x0 - b to x1 + b (within lo..hi), one
+  -- stone through the wall's thickness: {x0, x1, course} each, refused
+  -- where two in one course would overlap.
+  local function lintels_field(fn, t, openings, lo, hi, courses)
+    local b = t.lintel
+    if b == nil then return {} end
+    if type(b) ~= "number" or not (b >= 0 and b < math.huge) then
+      fail(fn, ("field 'lintel' must be the lintels' bearing on each side, a number >= 0 in units of L, got %s")
+        :format(report.show(b)))
+    end
+    local out = {}
+    for i, o in ipairs(openings) do
+      if o[4] < courses then
+        local l = { math.max(lo, o[1] - b), math.min(hi, o[2] + b), o[4] + 1, opening = i }
+        for _, q in ipairs(out) do
+          if q[3] == l[3] and l[1] < q[2] - JAMB and q[1] < l[2] - JAMB then
+            fail(fn, ("field 'lintel': the lintels over openings %d and %d overlap in course %d"):format(q.opening,
+                 i, l[3]))
+          end
+        end
+        out[#out + 1] = l
+      end
+    end
+    return out
+  end
+
+  -- the lintels of course c, as openings for cut() and as pieces {x0, x1}
+  local function course_lintels(lintels, c)
+    local holes, pieces = {}, {}
+    for _, l in ipairs(lintels) do
+      if l[3] == c then
+        holes[#holes + 1], pieces[#pieces + 1] = { l[1], l[2], c, c }, { l[1], l[2] }
+      end
+    end
+    return holes, pieces
+  end
+
   -- field 'thickness' of a panel of units L long: less than `most` L
   local function thickness(fn, t, L, most)
     local th = t.thickness
@@ -129,7 +171,7 @@ return function(M, fields)
 
   function M.facade(t)
     check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true,
-                         openings = true, thickness = true, at = true, base = true })
+                         openings = true, thickness = true, at = true, base = true, lintel = true })
     local box, base_slab = placement("facade", t)
     local n, m = positive_integer("facade", t, "length"), positive_integer("facade", t, "returns")
     local courses = positive_integer("facade", t, "courses")
@@ -139,6 +181,7 @@ return function(M, fields)
     local th = thickness("facade", t, L, 1)
     -- between the return walls' inner faces
     local openings = openings_field("facade", t, th / L, n - th / L, courses)
+    local lintels = lintels_field("facade", t, openings, th / L, n - th / L, courses)
     local W, D = n * L, th + m * L
     local blocks, rho = {}, t.density
     local function put(size, at) blocks[#blocks + 1] = box { size = size, at = at, density = rho } end
@@ -151,7 +194,9 @@ return function(M, fields)
         if inner then -- from the returns' inner faces
           pieces[1][1], pieces[#pieces][2] = inner, n - inner
         end
-        for _, p in ipairs(cut(pieces, openings, c + 1)) do
+        local holes, stones = course_lintels(lintels, c + 1)
+        for _, p in ipairs(cut(cut(pieces, openings, c + 1), holes, c + 1)) do stones[#stones + 1] = p end
+        for _, p in ipairs(stones) do
           put({ (p[2] - p[1]) * L, th, H }, { (p[1] + p[2]) / 2 * L, th / 2, z })
         end
       end
@@ -233,7 +278,7 @@ return function(M, fields)
 
   function M.bond(t)
     check("bond", t, { length = true, courses = true, unit = true, pattern = true, openings = true,
-                       thickness = true, density = true, at = true, base = true })
+                       thickness = true, density = true, at = true, base = true, lintel = true })
     local box, base_slab = placement("bond", t)
     local n, courses = positive_integer("bond", t, "length", 2), positive_integer("bond", t, "courses")
     local k = t.thickness == nil and 1 or positive_integer("bond", t, "thickness")
@@ -245,6 +290,7 @@ return function(M, fields)
         :format(report.show(pattern)))
     end
     local openings = openings_field("bond", t, 0, n, courses)
+    local lintels = lintels_field("bond", t, openings, 0, n, courses)
     -- a course as pieces {x0, x1, y0, y1} in units of L, then cut by the
     -- openings that reach it
     local function course(c)
@@ -279,7 +325,10 @@ return function(M, fields)
           run(0, w, k - 0.5, k)
         end
       end
-      return cut(pieces, openings, c)
+      local holes, stones = course_lintels(lintels, c)
+      pieces = cut(cut(pieces, openings, c), holes, c)
+      for _, p in ipairs(stones) do pieces[#pieces + 1] = { p[1], p[2], 0, k } end
+      return pieces
     end
     local blocks = {}
     for c = 1, courses do

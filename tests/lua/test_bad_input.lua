@@ -254,7 +254,7 @@ T.eq(message(function() box { size = { 1, 1 } } end), "box: field 'size' must be
 T.eq(message(function() box { size = { 1, 0 / 0, 1 } } end), "box: field 'size' entry 2 must be a positive number, got nan",
      "box{ size } with NaN: 'nan', not the C library's '-nan'")
 T.eq(message(function() facade { colour = "red" } end),
-     "facade: unknown field 'colour' (fields: at, base, courses, density, length, openings, returns, thickness, unit)",
+     "facade: unknown field 'colour' (fields: at, base, courses, density, length, lintel, openings, returns, thickness, unit)",
      "facade{ colour }: the fields listed")
 T.eq(message(function() pier { size = { 1, 1 }, courses = 2, height = 0.5, at = { 1, 2 } } end),
      "pier: field 'at' must be a list of 3 numbers, got 2", "pier{ at } of 2 numbers")

@@ -722,7 +722,40 @@ do
   T.raises(function() facade { length = 6, returns = 2, courses = 6, unit = { 0.4, 0.2 }, openings = { { 0.2, 1, 1, 1 } } } end,
            "facade{ openings } reaching into a return wall refused",
            "facade: field 'openings' entry 1 must have 0.5 <= x0 < x1 <= 5.5")
+  -- lintels (bearing L/2): the window {1.5, 3, 2, 4} gets one stone in
+  -- course 5 from 1 to 3.5 L, 0.2 high, L/2 thick; the weight is the
+  -- wall's less the window's, as without (the lintel replaces what it cuts)
+  model { dim = 3, mu = 0.65 }
+  local lb = facade { length = 6, returns = 2, courses = 6, unit = { 0.4, 0.2 }, openings = { { 1.5, 3, 2, 4 } },
+                      lintel = 0.5 }
+  local W, stone = 0, nil
+  for _, i in ipairs(lb) do
+    local info = current():block_info(i)
+    W = W + info.weight
+    if math.abs(info.volume - 2.5 * 0.4 * 0.2 * 0.2) < 1e-12 and math.abs(info.centroid[1] - 2.25 * 0.4) < 1e-12
+       and math.abs(info.centroid[3] - 4.5 * 0.2) < 1e-12 then stone = i end
+  end
+  T.ok(stone ~= nil, "facade{ lintel = 0.5 }: a stone 2.5 L long over the window, in course 5")
+  T.near(W, W0 - 1.5 * 0.4 * 0.2 * 0.2 * 3, 1e-12, "facade{ lintel }: the weight of the wall less the window's")
+  T.raises(function() facade { length = 6, returns = 2, courses = 6, unit = { 0.4, 0.2 },
+                               openings = { { 1, 2, 2, 3 }, { 2.5, 3.5, 1, 3 } }, lintel = 0.5 } end,
+           "facade{ lintel } whose stones would overlap refused",
+           "facade: field 'lintel': the lintels over openings 1 and 2 overlap in course 4")
 end
+-- bond{} with openings: without lintels the bricks over them hang on their
+-- head joints; with them (bearing L/2) the wall of 8 L x 10 courses with a
+-- window and a door keeps the volume of the wall less the openings, and
+-- pushed along its length it slides at mu (every course over the openings
+-- spans them on a lintel)
+model { dim = 3, mu = 0.6 }
+local lw = bond { length = 8, courses = 10, unit = { 0.4, 0.1 }, openings = { { 2, 4, 3, 6 }, { 5.5, 6.5, 1, 7 } },
+                  lintel = 0.5 }
+local lvol = 0
+for _, i in ipairs(lw) do lvol = lvol + current():block_info(i).volume end
+T.near(lvol, 8 * 0.4 * 0.4 * 10 * 0.1 - 2 * 0.4 * 0.4 * 4 * 0.1 - 0.4 * 0.4 * 7 * 0.1, 1e-12,
+       "bond{ lintel }: the volume of the wall less its openings")
+load { direction = { 1, 0, 0 } }
+T.near(solve { flow = "associative" }.alpha, 0.6, 1e-7, "bond{ lintel }: the wall slides along its length at mu")
 
 T.raises(function() model { interface = "resultant" } end, "the interface model is refused in 2D",
          "model", "'interface'")
