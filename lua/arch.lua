@@ -8,6 +8,7 @@
 -- In a 3D model it is a barrel vault: the same arch in the x-z plane (centre
 -- {x, z}) swept along y over `length`, in `segments` rings of voussoirs
 -- (default 1), on two springings running its whole length.
+-- springings = false: no springing blocks (the arch rests on the user's).
 -- fill = { level = H, density = g }: the weight of a fill up to the height
 -- H, carried by each voussoir at the centroid of the fill above it (a
 -- carried weight: dead, and moved by the weight-proportional live load;
@@ -16,7 +17,8 @@ local report = require "blocklim.report"
 
 return function(M, load_ratio)
   local allowed = { n = true, radius = true, span = true, thickness = true, angle = true,
-                    centre = true, density = true, length = true, segments = true, fill = true }
+                    centre = true, density = true, length = true, segments = true, fill = true,
+                    springings = true }
   local function fail(msg) error("arch: " .. msg, 3) end
   local function positive(t, k)
     local v = t[k]
@@ -47,7 +49,7 @@ return function(M, load_ratio)
     if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
     for k in pairs(t) do
       if not allowed[k] then
-        fail(("unknown field '%s' (fields: angle, centre, density, fill, length, n, radius, segments, span, thickness)")
+        fail(("unknown field '%s' (fields: angle, centre, density, fill, length, n, radius, segments, span, springings, thickness)")
           :format(tostring(k)))
       end
     end
@@ -79,7 +81,7 @@ return function(M, load_ratio)
     -- the springings continue the end joints along the tangent, th wide at
     -- the intrados: they meet where the opening leaves less than that
     local room = 360 - 2 * math.deg(math.atan(th, R - th / 2))
-    if angle >= room then
+    if angle >= room and t.springings ~= false then
       fail(("field 'angle' leaves no room for the springings: with this thickness it must be below %.4g degrees")
         :format(room))
     end
@@ -104,6 +106,9 @@ return function(M, load_ratio)
       if angle > 180 then
         fail("field 'fill' needs an arch of at most 180 degrees (a horseshoe's extrados overhangs)")
       end
+    end
+    if t.springings ~= nil and type(t.springings) ~= "boolean" then
+      fail("field 'springings' must be true or false, got " .. report.show(t.springings))
     end
     local m = M.current()
     local solid = m and m:dim() == 3
@@ -179,7 +184,7 @@ return function(M, load_ratio)
     end
     -- Springings continue each end joint along the arch's tangent, away from it.
     local springs = {}
-    for _, e in ipairs { { a0, 1 }, { a0 - 2 * half, -1 } } do
+    for _, e in ipairs(t.springings == false and {} or { { a0, 1 }, { a0 - 2 * half, -1 } }) do
       local a, s = e[1], e[2]
       local tx, ty = -math.sin(a) * s * th, math.cos(a) * s * th
       local p, q = at(ri, a), at(ro, a)

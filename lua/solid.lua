@@ -11,7 +11,8 @@
 -- dome{ radius = R, thickness = t, rings = m, segments = k, centre = {x, y, z},
 --   density }: a hemispherical dome of m rings of k voussoirs each (the
 --   top ring's voussoirs meet at the crown), radial joints, on a fixed base
---   slab under z = centre z.  Returns the voussoir numbers and the base.
+--   slab under z = centre z (base = false: none, nil returned).  Returns
+--   the voussoir numbers and the base.
 local report = require "blocklim.report"
 
 return function(M)
@@ -87,7 +88,10 @@ return function(M)
 
   function M.dome(t)
     check("dome", t, { radius = true, thickness = true, rings = true, segments = true,
-                       centre = true, density = true })
+                       centre = true, density = true, base = true })
+    if t.base ~= nil and type(t.base) ~= "boolean" then
+      fail("dome", "field 'base' must be true or false, got " .. report.show(t.base))
+    end
     local function positive(k)
       if type(t[k]) ~= "number" or not (t[k] > 0) or t[k] == math.huge then
         fail("dome", ("field '%s' must be a positive number, got %s"):format(k, report.show(t[k])))
@@ -128,6 +132,7 @@ return function(M)
         blocks[#blocks + 1] = M.block { points = pts, density = t.density }
       end
     end
+    if t.base == false then return report.blocks(blocks), nil end -- it stands on the user's blocks
     local base = M.box { size = { 2 * ro + 2 * th, 2 * ro + 2 * th, th }, at = { c[1], c[2], c[3] - th },
                          support = true }
     return report.blocks(blocks), base

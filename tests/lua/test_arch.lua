@@ -202,4 +202,29 @@ for _, H in ipairs { 1.4, 0.95 } do
          ("fill to H = %g: the vault 0.7 long in 2 rings under the horizontal load = the 2D arch 0.7 thick"):format(H))
 end
 
+-- springings = false: the arch on piers of one's own.  On piers 1.0 wide
+-- (1.5 high) the piers stay and alpha is that of fixed springings; on
+-- piers 0.6 wide they overturn with the arch, lower
+local function on_piers(w)
+  model { mu = 0.6 }
+  local v, s = arch { n = 9, radius = 2, thickness = 0.3, centre = { 0, 1.5 }, springings = false }
+  T.ok(#v == 9 and #s == 0, "arch{ springings = false }: 9 voussoirs, no springings")
+  block { vertices = { { -1.85 - w, 0 }, { -1.85, 0 }, { -1.85, 1.5 }, { -1.85 - w, 1.5 } } }
+  block { vertices = { { 1.85, 0 }, { 1.85 + w, 0 }, { 1.85 + w, 1.5 }, { 1.85, 1.5 } } }
+  block { vertices = { { -4, -0.3 }, { 4, -0.3 }, { 4, 0 }, { -4, 0 } }, support = true }
+  load { live = "horizontal" }
+  return solve { flow = "associative" }.alpha
+end
+model { mu = 0.6 }
+arch { n = 9, radius = 2, thickness = 0.3, centre = { 0, 1.5 } }
+load { live = "horizontal" }
+local fixed = solve { flow = "associative" }.alpha
+T.near(on_piers(1.0), fixed, 1e-9, "an arch on piers 1.0 wide: the alpha of fixed springings")
+local narrow = on_piers(0.6)
+T.ok(narrow < 0.9 * fixed, "an arch on piers 0.6 wide: below fixed springings (the piers overturn)",
+     ("%.6f against %.6f"):format(narrow, fixed))
+model { dim = 3, mu = 0.6 }
+local dv, dbase = dome { radius = 1, thickness = 0.1, rings = 3, segments = 8, base = false }
+T.ok(#dv == 24 and dbase == nil, "dome{ base = false }: 24 voussoirs, no base slab")
+
 T.done()

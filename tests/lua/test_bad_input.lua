@@ -167,6 +167,8 @@ local bad = {
   { "arch", function() arch { n = 0, radius = 1, thickness = 0.1 } end, "arch", "'n'" },
   { "arch", function() arch { n = 1, radius = 1, thickness = 0.1 } end, "arch", "'n'", "180 degrees" },
   { "arch", function() arch { n = 3, radius = 1, thickness = 0.1, centre = { 0 } } end, "arch", "'centre'" },
+  { "arch", function() arch { n = 3, radius = 1, thickness = 0.1, springings = 1 } end, "arch", "'springings'",
+    "true or false" },
   { "arch", function() arch { n = 3, radius = 1, thickness = 0.1, centre = { 7, 5, 3 } } end, "arch", "'centre'",
     "{x, y} of two" },
   { "arch", function() arch { n = 8, radius = 1, thickness = 0.1, angle = 360 } end, "arch", "'angle'",
@@ -258,6 +260,8 @@ T.eq(message(function() facade { colour = "red" } end),
      "facade{ colour }: the fields listed")
 T.eq(message(function() pier { size = { 1, 1 }, courses = 2, height = 0.5, at = { 1, 2 } } end),
      "pier: field 'at' must be a list of 3 numbers, got 2", "pier{ at } of 2 numbers")
+T.eq(message(function() dome { radius = 1, thickness = 0.1, rings = 2, segments = 6, base = 0 } end),
+     "dome: field 'base' must be true or false, got 0", "dome{ base = 0 }")
 T.eq(message(function() bond { length = 4, courses = 2, unit = { 0.4, 0.1 }, base = "no" } end),
      "bond: field 'base' must be true or false, got \"no\"", "bond{ base = 'no' }")
 T.eq(message(function() wall { courses = { { 1 } }, thickness = 0.2 } end),
