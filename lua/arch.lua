@@ -49,7 +49,8 @@ return function(M, load_ratio)
     if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
     for k in pairs(t) do
       if not allowed[k] then
-        fail(("unknown field '%s' (fields: angle, centre, density, fill, length, n, radius, segments, span, springings, thickness)")
+        fail(("unknown field '%s' (fields: angle, centre, density, fill, length, n, radius, segments, span, "
+              .. "springings, thickness)")
           :format(tostring(k)))
       end
     end

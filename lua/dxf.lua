@@ -1,24 +1,25 @@
 -- dxf.lua - the closed polylines of an ASCII DXF file, for import{}
 -- (import.lua).
 --
--- read(text, where, fail, step) -> shapes, skipped, resolution
--- A shape is { name = layer, line, via, points = {{x, y, z}, ...} }: every
+-- read(text, where, fail, step) -> shapes, skipped, digits
+-- A shape is { name = layer, line, via, sagitta, points = {{x, y, z}, ...} }: every
 -- closed LWPOLYLINE, and every closed POLYLINE with its VERTEX entities up
 -- to SEQEND, of the ENTITIES section, in model space, and of the blocks
 -- that INSERT entities place there (nested, arrays of MINSERT), in world
 -- coordinates.  An entity drawn from below (extrusion (0, 0, -1)) is
 -- mirrored back.  An arc segment (a bulge) becomes chords of at most
--- `step` radians each, on the arc; the same arc drawn from either end
--- gives the same points, so two shapes that share it still touch.  A point
+-- `step` radians each, on the arc (`sagitta`: the largest distance between
+-- a shape's arcs and their chords); the same arc drawn from either end
+-- gives the same points.  A point
 -- repeated next to itself, or the first point repeated at the end, is one
 -- point.  In a block, an entity on layer 0 takes the layer of its INSERT,
 -- and `via` names the block and the INSERT's line.  Everything else is
 -- listed in `skipped` ("line 40: LINE"; an inserted block's once).
 -- Files before AutoCAD 2007 (R12 to 2004) write names in their code page:
 -- Windows-1252 is read as such; "\U+00E4" escapes are read in every file.
--- `resolution` is the last digit written in a coordinate (10^-decimals),
--- times the largest scale of an INSERT a shape comes through (nil where no
--- coordinate has a decimal point).
+-- `digits[d]` counts the polylines' coordinates written with d decimals
+-- (not those in exponent notation).  Blocks that no INSERT places, and
+-- blocks that hold no polylines, are not read.
 local M = {}
 
 local function finite(v) return type(v) == "number" and v == v and math.abs(v) < math.huge end
@@ -62,7 +63,7 @@ local MIRROR = { -1, 0, 0, 1, 0, 0, -1, 0 }
 -- The points strictly inside the arc from p to q of bulge b (the tangent of
 -- a quarter of its angle, positive counter-clockwise), on chords of at most
 -- `step` radians, computed from the lower end so that the arc drawn the
--- other way round gives the same points.
+-- other way round gives the same points; and the chords' sagitta.
 local function arc(p, q, b, step)
   local flip = q[1] < p[1] or q[1] == p[1] and q[2] < p[2]
   if flip then p, q, b = q, p, -b end
@@ -79,7 +80,7 @@ local function arc(p, q, b, step)
   if flip then
     for i = 1, #out // 2 do out[i], out[#out + 1 - i] = out[#out + 1 - i], out[i] end
   end
-  return out
+  return out, r * (1 - math.cos(theta / n / 2))
 end
 
 function M.read(text, where, fail, step)
@@ -148,17 +149,19 @@ function M.read(text, where, fail, step)
   end
   local cp1252 = version < "AC1021" and codepage:upper() == "ANSI_1252"
 
-  local shapes, skipped, decimals, grow = {}, {}, nil, 0
+  local shapes, skipped, digits = {}, {}, {}
   local function what(e, layer) return ("%s on layer '%s'"):format(e.type, layer) end
-  local function number(e, p, layer)
+  -- a number of entity e; a polyline's coordinates (counted) also add their
+  -- decimals to `digits`
+  local function number(e, p, layer, counted)
     local v = not p.value:find("[xXnN]") and tonumber(p.value)
     if not finite(v) then
       fail(("%s: %s: group %d must be a finite decimal number, got '%s'"):format(where(p.line), what(e, layer),
            p.code, p.value))
     end
-    if p.code >= 10 and p.code <= 30 then
-      local d = p.value:match("%.(%d*)$")
-      if d then decimals = math.max(decimals or 0, #d) end
+    if counted and not p.value:find("[eE]") then
+      local d = #(p.value:match("%.(%d*)$") or "")
+      digits[d] = (digits[d] or 0) + 1
     end
     return v
   end
@@ -170,38 +173,46 @@ function M.read(text, where, fail, step)
     end
     return v
   end
-  local function layer_of(e)
+  -- an entity's layer; inside a block, layer 0 is its INSERT's
+  local function layer_of(e, into)
+    local layer = "0"
     for _, p in ipairs(e) do
-      if p.code == 8 then return decode(p.value, cp1252) end
+      if p.code == 8 then layer = decode(p.value, cp1252) end
     end
-    return "0"
+    return layer == "0" and into and into.layer or layer
   end
-  local function extrusion(e, f)
-    local ex = f.ext
+  -- whether entity e is drawn from below (extrusion (0, 0, -1)); any
+  -- other plane than the world's x-y is an error
+  local function mirrored(e, layer)
+    local ex = { 0, 0, 1 }
+    for _, p in ipairs(e) do
+      local c = p.code
+      if c >= 210 and c <= 230 and c % 10 == 0 then ex[(c - 200) // 10] = number(e, p, layer) end
+    end
     if math.abs(ex[1]) + math.abs(ex[2]) > 1e-12 * math.abs(ex[3]) or ex[3] == 0 then
       fail(("%s: %s: drawn in a plane other than the world's x-y (extrusion %g %g %g): turn it into x-y")
-           :format(where(e.line), what(e, f.layer), ex[1], ex[2], ex[3]))
+           :format(where(e.line), what(e, layer), ex[1], ex[2], ex[3]))
     end
     return ex[3] < 0
   end
-  -- a polyline's layer, flags, elevation, space, extrusion and points (each
-  -- with the bulge of the segment it begins)
+  -- a polyline's flags, elevation, space and points (each with the bulge
+  -- of the segment it begins)
   local function fields(e, layer)
-    local f, pts = { flags = 0, ext = { 0, 0, 1 }, layer = layer }, {}
+    local f, pts = { flags = 0, layer = layer }, {}
     for _, p in ipairs(e) do
       local c = p.code
       if c == 70 then f.flags = integer(e, p, layer, "flags")
-      elseif c == 38 then f.elevation = number(e, p, layer)
+      elseif c == 38 then f.elevation = number(e, p, layer, true)
       elseif c == 67 then f.paper = number(e, p, layer) == 1
       elseif c == 90 then f.count = math.tointeger(number(e, p, layer))
-      elseif c == 10 then pts[#pts + 1] = { number(e, p, layer), line = p.line }
+      elseif c == 10 then pts[#pts + 1] = { number(e, p, layer, true), line = p.line }
       elseif c == 20 or c == 30 then
         local q, k = pts[#pts], c // 10
         if not q or q[k] ~= nil or (k == 3 and q[2] == nil) then
           fail(("%s: %s: group %d without the group %d before it"):format(where(p.line), what(e, layer), c,
                c - 10))
         end
-        q[k] = number(e, p, layer)
+        q[k] = number(e, p, layer, true)
       elseif c == 42 then
         local b = number(e, p, layer)
         if math.abs(b) > 1e4 then
@@ -209,7 +220,6 @@ function M.read(text, where, fail, step)
                where(p.line), what(e, layer), b))
         end
         if pts[#pts] and b ~= 0 then pts[#pts].bulge = b end
-      elseif c >= 210 and c <= 230 and c % 10 == 0 then f.ext[(c - 200) // 10] = number(e, p, layer)
       end
     end
     for _, q in ipairs(pts) do
@@ -218,23 +228,58 @@ function M.read(text, where, fail, step)
       end
       q[3] = q[3] or 0
     end
-    f.mirrored = extrusion(e, f)
+    f.mirrored = mirrored(e, layer)
     return f, pts
+  end
+
+  -- The blocks by name (AutoCAD's names ignore case), each read when an
+  -- INSERT first places it: its name, flags and base point.
+  local byname, listed = {}, {}
+  for _, b in ipairs(blocks) do
+    for _, p in ipairs(b) do
+      if p.code == 2 then b.name = decode(p.value, cp1252) end
+    end
+    if b.name then byname[b.name:upper()] = byname[b.name:upper()] or b end
+  end
+  local function header(b)
+    if b.base then return end
+    local label = ("BLOCK '%s'"):format(b.name)
+    b.base, b.flags = { 0, 0, 0 }, 0
+    for _, p in ipairs(b) do
+      if p.code == 70 then b.flags = integer({ type = label, line = b.line }, p, "0", "flags") end
+      if p.code >= 10 and p.code <= 30 and p.code % 10 == 0 then
+        b.base[p.code // 10] = number({ type = label, line = b.line }, p, "0")
+      end
+    end
+  end
+  -- whether block b holds a polyline, itself or in the blocks it places
+  -- (taken as so past the depth that insert() refuses, to say so there)
+  local DEEPEST = 32
+  local function holds_polylines(b, seen, depth)
+    if depth > DEEPEST then return true end
+    if b.polylines == nil then
+      seen = seen or {}
+      seen[b] = true
+      local found = false
+      for _, e in ipairs(b.entities) do
+        if e.type == "LWPOLYLINE" or e.type == "POLYLINE" then found = true end
+        if e.type == "INSERT" and not found then
+          for _, p in ipairs(e) do
+            local inner = p.code == 2 and byname[decode(p.value, cp1252):upper()]
+            if inner and not seen[inner] and holds_polylines(inner, seen, depth + 1) then found = true end
+          end
+        end
+      end
+      if depth == 0 or found then b.polylines = found end -- a deep "no" may be the depth's
+      return found
+    end
+    return b.polylines
   end
 
   -- The entities of a list (the ENTITIES section, or a block's) as shapes,
   -- through T; `into` is the INSERT that places the list ({ layer, via,
-  -- names = the blocks it goes through }), nil in ENTITIES.
-  local byname, listed = {}, {}
-  for _, b in ipairs(blocks) do
-    b.base = { 0, 0, 0 }
-    for _, p in ipairs(b) do
-      if p.code == 2 then b.name = decode(p.value, cp1252) end
-      if p.code == 70 then b.flags = integer(b, p, "0", "flags") end
-      if p.code >= 10 and p.code <= 30 and p.code % 10 == 0 then b.base[p.code // 10] = number(b, p, "0") end
-    end
-    if b.name then byname[b.name:upper()] = b end
-  end
+  -- names = the blocks it goes through, copies = how many times it is
+  -- placed }), nil in ENTITIES; `inside` the block the list is.
   local walk
   local function skip(e, why, inside)
     if inside then
@@ -259,24 +304,24 @@ function M.read(text, where, fail, step)
     if ends then kept[#kept] = nil end
     if f.flags & 1 == 0 and not ends then return skip(e, "open " .. what(e, f.layer), inside) end
     if f.mirrored then T = compose(T, MIRROR) end
-    local out = {}
+    local out, sagitta = {}, 0
     for i, q in ipairs(kept) do
       out[#out + 1] = apply(T, q)
       if q.bulge then
-        for _, r in ipairs(arc(q, kept[i % #kept + 1], q.bulge, step)) do out[#out + 1] = apply(T, r) end
+        local r, s = arc(q, kept[i % #kept + 1], q.bulge, step)
+        sagitta = math.max(sagitta, s * stretch(T))
+        for _, p in ipairs(r) do out[#out + 1] = apply(T, p) end
       end
     end
-    grow = math.max(grow, stretch(T))
     if #shapes == 1000000 then
       fail(("%s: %s: more than a million closed polylines"):format(where(e.line), what(e, f.layer)))
     end
-    shapes[#shapes + 1] = { name = f.layer, line = e.line, points = out, via = into and into.via }
+    shapes[#shapes + 1] = { name = f.layer, line = e.line, points = out, via = into and into.via,
+                            sagitta = sagitta > 0 and sagitta or nil }
   end
   local function insert(e, T, into, inside)
-    local layer = layer_of(e)
-    if layer == "0" and into then layer = into.layer end
-    local f = { ext = { 0, 0, 1 }, layer = layer }
-    local s, at, cols, rows, step_c, step_r, turn, name = { 1, 1, 1 }, { 0, 0, 0 }, 1, 1, 0, 0, 0, nil
+    local layer = layer_of(e, into)
+    local s, at, cols, rows, step_c, step_r, turn, name, paper = { 1, 1, 1 }, { 0, 0, 0 }, 1, 1, 0, 0, 0, nil, false
     for _, p in ipairs(e) do
       local c = p.code
       if c == 2 then name = decode(p.value, cp1252)
@@ -287,48 +332,57 @@ function M.read(text, where, fail, step)
       elseif c == 71 then rows = integer(e, p, layer, "rows")
       elseif c == 44 then step_c = number(e, p, layer)
       elseif c == 45 then step_r = number(e, p, layer)
-      elseif c == 67 then f.paper = number(e, p, layer) == 1
-      elseif c >= 210 and c <= 230 and c % 10 == 0 then f.ext[(c - 200) // 10] = number(e, p, layer)
+      elseif c == 67 then paper = number(e, p, layer) == 1
       end
     end
-    if f.paper then return skip(e, what(e, layer) .. " in paper space", inside) end
-    if not name then fail(("%s: %s without its block's name (group 2)"):format(where(e.line), what(e, layer))) end
+    local via = into and (" (%s)"):format(into.via) or ""
+    if paper then return skip(e, what(e, layer) .. " in paper space", inside) end
+    if not name then
+      fail(("%s%s: %s without its block's name (group 2)"):format(where(e.line), via, what(e, layer)))
+    end
     local b = byname[name:upper()]
     if not b then
-      fail(("%s: %s places block '%s', which the file does not define (no BLOCK of that name in its BLOCKS "
-            .. "section)"):format(where(e.line), what(e, layer), name))
+      fail(("%s%s: %s places block '%s', which the file does not define (no BLOCK of that name in its "
+            .. "BLOCKS section)"):format(where(e.line), via, what(e, layer), name))
     end
-    if (b.flags or 0) & 4 == 4 then
+    header(b)
+    if b.flags & 4 == 4 then
       return skip(e, ("INSERT of block '%s', a reference to another drawing"):format(name), inside)
     end
     local names = into and into.names or {}
-    for _, seen in ipairs(names) do
-      if seen == b then
-        fail(("%s: %s places block '%s' inside itself"):format(where(e.line), what(e, layer), name))
-      end
+    if names[b] then
+      fail(("%s%s: %s places block '%s' inside itself"):format(where(e.line), via, what(e, layer), name))
+    end
+    if into and into.depth >= DEEPEST then
+      fail(("%s%s: %s: blocks nested more than %d deep"):format(where(e.line), via, what(e, layer), DEEPEST))
     end
     if s[1] == 0 or s[2] == 0 or s[3] == 0 then
       return skip(e, ("INSERT of block '%s' scaled to nothing"):format(name), inside)
     end
-    cols, rows = cols == 0 and 1 or cols, rows == 0 and 1 or rows -- some programs write 0 for one
-    if cols < 1 or rows < 1 or cols * rows > 1e6 then
-      fail(("%s: %s: an array of %d columns and %d rows; give 1 to 10^6 copies"):format(where(e.line),
-           what(e, layer), cols, rows))
+    if not holds_polylines(b, nil, 0) then
+      return skip(e, ("INSERT of block '%s', which holds no polylines"):format(name), inside)
     end
-    local mirrored = extrusion(e, f)
+    cols, rows = cols == 0 and 1 or cols, rows == 0 and 1 or rows -- some programs write 0 for one
+    local copies = (into and into.copies or 1) * 1.0 * cols * rows
+    if cols < 1 or rows < 1 or copies > 1e6 then
+      fail(("%s%s: %s: an array of %d columns and %d rows%s; give 1 to 10^6 copies in all"):format(where(e.line),
+           via, what(e, layer), cols, rows, into and (", placed %d times"):format(math.floor(into.copies)) or ""))
+    end
+    local mirror = mirrored(e, layer)
     local c, sn = math.cos(turn), math.sin(turn)
-    local base = b.base
-    local deeper = { table.unpack(names) }
-    deeper[#deeper + 1] = b
-    local via = ("block '%s' placed at line %d"):format(name, e.line)
-    local next_into = { layer = layer, names = deeper, via = into and (via .. ", " .. into.via) or via }
+    local deeper = setmetatable({ [b] = true }, { __index = names })
+    local here = ("block '%s' placed at line %d"):format(name, e.line)
+    local next_into = { layer = layer, names = deeper, via = into and (here .. ", " .. into.via) or here,
+                        depth = (into and into.depth or 0) + 1, copies = copies }
     for row = 0, rows - 1 do
       for col = 0, cols - 1 do
-        local ox, oy = s[1] * -base[1] + col * step_c, s[2] * -base[2] + row * step_r
-        local M = { c * s[1], -sn * s[2], sn * s[1], c * s[2], at[1] + c * ox - sn * oy, at[2] + sn * ox + c * oy,
-                    s[3], at[3] - s[3] * base[3] }
-        if mirrored then M = compose(MIRROR, M) end
-        walk(b.entities, compose(T, M), next_into, b)
+        -- scale about the base point, shift by the array's step in the
+        -- turned frame, turn, move to the insertion point
+        local ox, oy = s[1] * -b.base[1] + col * step_c, s[2] * -b.base[2] + row * step_r
+        local place = { c * s[1], -sn * s[2], sn * s[1], c * s[2], at[1] + c * ox - sn * oy,
+                        at[2] + sn * ox + c * oy, s[3], at[3] - s[3] * b.base[3] }
+        if mirror then place = compose(MIRROR, place) end
+        walk(b.entities, compose(T, place), next_into, b)
         listed[b] = true
       end
     end
@@ -342,11 +396,9 @@ function M.read(text, where, fail, step)
       end
     end
     for _, e in ipairs(list) do
-      local layer = layer_of(e)
-      if layer == "0" and into then layer = into.layer end
       if e.type == "VERTEX" then
         if not poly then fail(where(e.line) .. ": a VERTEX outside a POLYLINE") end
-        local vf, pts = fields(e, layer)
+        local vf, pts = fields(e, poly.f.layer)
         if not pts[1] then fail(where(e.line) .. ": a VERTEX without its point (group 10)") end
         pts[1][3] = poly.f.flags & 8 == 8 and pts[1][3] or (poly.f.elevation or 0)
         poly.pts[#poly.pts + 1] = pts[1]
@@ -363,7 +415,7 @@ function M.read(text, where, fail, step)
         unfinished()
         attributes = false
         if e.type == "LWPOLYLINE" then
-          local f, pts = fields(e, layer)
+          local f, pts = fields(e, layer_of(e, into))
           if f.count and f.count ~= #pts then
             fail(("%s: %s: %d points where group 90 says %d: is the file cut short?"):format(where(e.line),
                  what(e, f.layer), #pts, f.count))
@@ -371,7 +423,7 @@ function M.read(text, where, fail, step)
           for _, q in ipairs(pts) do q[3] = f.elevation or 0 end
           add(e, f, pts, T, into, inside)
         elseif e.type == "POLYLINE" then
-          local f, pts = fields(e, layer)
+          local f, pts = fields(e, layer_of(e, into))
           if f.flags & (16 | 64) ~= 0 then
             fail(("%s: %s: a polygon or polyface mesh; a 2D model takes closed polylines"):format(where(e.line),
                  what(e, f.layer)))
@@ -395,7 +447,7 @@ function M.read(text, where, fail, step)
     unfinished()
   end
   walk(entities, IDENTITY, nil, nil)
-  return shapes, skipped, decimals and 10 ^ -decimals * math.max(grow, 1e-300)
+  return shapes, skipped, digits
 end
 
 return M

@@ -129,6 +129,20 @@ return function(M)
     return out
   end
 
+  -- The last digit of a file that writes its coordinates to a fixed number
+  -- of decimals (Blender's "%.6f": nine in ten of them with the most
+  -- decimals any has), else nil: a file that writes each number as short
+  -- as it goes ("0.5", "87.5") says nothing of its precision by its
+  -- decimals, and is taken as exact.
+  local function fixed_point(digits)
+    local total, most = 0, nil
+    for d, count in pairs(digits) do
+      total, most = total + count, math.max(most or d, d)
+    end
+    if not most or most == 0 or digits[most] < 0.9 * total then return nil end
+    return 10 ^ -most
+  end
+
   local planes = { xy = { 1, 2, 3 }, xz = { 1, 3, 2 }, yz = { 2, 3, 1 } }
 
   return function(t)
@@ -160,8 +174,8 @@ return function(M)
       fail("field 'arc_step' is for DXF files: an OBJ has no arcs")
     end
     local arc_step = t.arc_step or 0.25
-    if not finite(arc_step) or arc_step < 0.01 or arc_step > 90 then
-      fail("field 'arc_step' must be an angle from 0.01 to 90 degrees, got " .. tostring(t.arc_step))
+    if not finite(arc_step) or arc_step < 0.05 or arc_step > 90 then
+      fail("field 'arc_step' must be an angle from 0.05 to 90 degrees, got " .. report.show(t.arc_step))
     end
     local scale = t.scale or 1
     if not finite(scale) or not (scale > 0) then
@@ -196,13 +210,11 @@ return function(M)
     local function where(line) return ("'%s' line %d"):format(t.file, line) end
     text = text:gsub("^\239\187\191", ""):gsub("\r\n?", "\n") -- a byte-order mark; CR LF or CR alone
 
-    local shapes, skipped, unit
+    local shapes, skipped, digits
     if format == "obj" then
-      local decimals
-      shapes, skipped, decimals = obj.read(text, where, solid, fail)
-      unit = decimals and 10 ^ -decimals
+      shapes, skipped, digits = obj.read(text, where, solid, fail)
     else
-      shapes, skipped, unit = dxf.read(text, where, fail, math.rad(arc_step))
+      shapes, skipped, digits = dxf.read(text, where, fail, math.rad(arc_step))
     end
     if #shapes == 0 then
       fail(("'%s' has no %s"):format(t.file, format == "dxf" and "closed polylines in its ENTITIES section"
@@ -221,7 +233,8 @@ return function(M)
     -- the file's last digit; a point rounded to it is off by up to half of
     -- it on each axis, so that a plane through rounded points can miss
     -- another by about as much
-    local resolution = unit and unit * scale
+    local resolution = fixed_point(digits)
+    resolution = resolution and resolution * scale
     local eps = math.max(1e-9 * size, 2 * (resolution or 0))
 
     -- In 2D every shape lies in the plane of the first one.
@@ -263,7 +276,10 @@ return function(M)
 
     local blocks, names = {}, {}
     for i, s in ipairs(shapes) do
-      local fields = { support = marks[i], density = t.density, resolution = resolution }
+      -- the block's own resolution: the file's, or its arcs' chords'
+      -- sagitta if coarser
+      local own = math.max(resolution or 0, (s.sagitta or 0) * scale)
+      local fields = { support = marks[i], density = t.density, resolution = own > 0 and own or nil }
       if solid then
         local d = 0
         for _, p in ipairs(s.points) do

@@ -1,14 +1,14 @@
 -- obj.lua - the shapes of a Wavefront OBJ file, for import{} (import.lua).
 --
--- read(text, where, solid, fail) -> shapes, skipped, decimals
+-- read(text, where, solid, fail) -> shapes, skipped, digits
 -- A shape is { name, line, points = {{x, y, z}, ...}, faces = {{i, j, k, ...}, ...} }
 -- with its own points (those of equal coordinates one point) numbered from
 -- 1 in the file's order, and `first`, the file's number of its point 1.
 -- In a 3D model (solid) a shape is an object: an `o` line and the faces
 -- after it, or, in a file without `o` lines, a group (`g`); in 2D every
 -- face is a shape of one face, its points in the face's order, named by
--- its object or group.  `decimals` is the most digits written after a
--- decimal point in a coordinate (nil where none has one).
+-- its object or group.  `digits[d]` counts the coordinates written with d
+-- decimals (not those in exponent notation).
 local M = {}
 
 local function finite(v) return type(v) == "number" and v == v and math.abs(v) < math.huge end
@@ -44,7 +44,7 @@ function M.read(text, where, solid, fail)
     if tok[1] == "o" then starts = "o" break end
   end
 
-  local verts, texts, shapes, skipped, decimals = {}, {}, {}, {}, nil
+  local verts, texts, shapes, skipped, digits = {}, {}, {}, {}, {}
   local name, group, named = "", nil, nil
   local function unused()
     if named and not named.used then
@@ -61,8 +61,10 @@ function M.read(text, where, solid, fail)
         fail(where(tok.line) .. ": a vertex 'v' needs three finite decimal numbers x y z")
       end
       for j = 2, 4 do
-        local d = tok[j]:match("%.(%d*)$")
-        if d then decimals = math.max(decimals or 0, #d) end
+        if not tok[j]:find("[eE]") then
+          local d = #(tok[j]:match("%.(%d*)$") or "")
+          digits[d] = (digits[d] or 0) + 1
+        end
       end
       verts[#verts + 1], texts[#verts + 1] = p, ("%.17g %.17g %.17g"):format(p[1], p[2], p[3])
     elseif key == "f" then
@@ -125,7 +127,7 @@ function M.read(text, where, solid, fail)
     end
     s.points = pts
   end
-  return shapes, skipped, decimals
+  return shapes, skipped, digits
 end
 
 return M

@@ -14,8 +14,13 @@ void bl_contact_tolerances(const bl_model *m, double *tol, double *gap)
     }
     if (m->nblocks) typical /= m->nblocks;
     /* by default, faces that meet to the last digit of a file's numbers
-     * (doc/guide.md, import) touch */
-    *tol = m->contact_tol > 0.0 ? m->contact_tol : fmax(1e-8 * bl_model_size(m), 10.0 * resolution);
+     * (or to an arc's chords; doc/guide.md, import) touch: 10 times the
+     * coarsest resolution, but at most a thousandth of a typical block and
+     * a tenth of a near-miss gap given, so that it never swallows a joint
+     * or the near-miss check */
+    double own = fmin(10.0 * resolution, 1e-3 * typical);
+    if (m->contact_gap > 0.0) own = fmin(own, 0.1 * m->contact_gap);
+    *tol = m->contact_tol > 0.0 ? m->contact_tol : fmax(1e-8 * bl_model_size(m), own);
     *gap = m->contact_gap > 0.0 ? m->contact_gap : 1e-2 * typical;
     if (m->contact_gap < 0.0) *gap = 0.0; /* near-miss check switched off */
     if (*gap < *tol) *gap = *tol;

@@ -209,20 +209,23 @@ refused(3, { file = "blocks.txt" }, "a name of no known format", "field 'format'
 refused(2, { file = boxes }, "a 3D OBJ in a 2D model", "off the plane z", "field 'plane'")
 refused(2, { file = w1obj, plane = "xz", thickness = "1" }, "a thickness given as a string",
         "field 'thickness' must be a positive number")
+local E0 = "0\nSECTION\n2\nENTITIES\n"
+local square = "0\nLWPOLYLINE\n8\nA\n90\n4\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n10\n0\n20\n1\n"
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nA\n70\n1\n10\n0\n20\n0\n42\n2e4\n"
                           .. "10\n1\n20\n0\n10\n1\n20\n1\n0\nENDSEC\n0\nEOF\n") },
         "an arc of almost a whole circle", "line 15", "LWPOLYLINE on layer 'A'", "bulge of 20000")
-refused(2, { file = w1dxf, arc_step = 0 }, "an arc_step of 0", "field 'arc_step' must be an angle from 0.01 to 90")
+refused(2, { file = w1dxf, arc_step = 0 }, "an arc_step of 0", "field 'arc_step' must be an angle from 0.05 to 90")
 refused(2, { file = w1dxf, arc_step = "1" }, "an arc_step given as a string", "field 'arc_step' must be an angle")
 refused(2, { file = w1obj, plane = "xz", arc_step = 1 }, "an arc_step for an OBJ", "field 'arc_step' is for DXF")
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nINSERT\n8\nA\n2\nbrick\n10\n0\n20\n0\n"
                           .. "0\nENDSEC\n0\nEOF\n") },
         "an INSERT of a block the file does not define", "line 5", "INSERT on layer 'A' places block 'brick'",
         "does not define")
-refused(2, { file = write(".dxf", "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nloop\n10\n0\n20\n0\n0\nINSERT\n8\n0\n"
-                          .. "2\nLOOP\n10\n1\n20\n0\n0\nENDBLK\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nINSERT\n"
-                          .. "8\nA\n2\nloop\n10\n0\n20\n0\n0\nENDSEC\n0\nEOF\n") },
-        "a block that places itself", "line 13", "places block 'LOOP' inside itself")
+refused(2, { file = write(".dxf", "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nloop\n10\n0\n20\n0\n" .. square
+                          .. "0\nINSERT\n8\n0\n2\nLOOP\n10\n1\n20\n0\n0\nENDBLK\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n"
+                          .. "0\nINSERT\n8\nA\n2\nloop\n10\n0\n20\n0\n0\nENDSEC\n0\nEOF\n") },
+        "a block that places itself", "line 37", "(block 'loop' placed at line 55)",
+        "places block 'LOOP' inside itself")
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nPOLYLINE\n8\nM\n70\n64\n0\nSEQEND\n0\nENDSEC\n") },
         "a polyface mesh", "line 5", "polyface")
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLINE\n0\nENDSEC\n0\nEOF\n") },
@@ -233,8 +236,6 @@ refused(2, { file = write(".dxf", "AutoCAD Binary DXF\r\n\26\0") }, "a binary DX
 refused(2, { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nA\n70\n1\n10\n0\n20\n0\n"
                           .. "10\n1\n20\n0\n10\n2\n20\n0\n0\nENDSEC\n0\nEOF\n") },
         "a polygon of no area", "line 5 (layer 'A')", "zero area")
-local E0 = "0\nSECTION\n2\nENTITIES\n"
-local square = "0\nLWPOLYLINE\n8\nA\n90\n4\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n10\n0\n20\n1\n"
 refused(2, { file = write(".dxf", E0 .. "0\nLWPOLYLINE\n8\nA\n90\n4\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n") },
         "a DXF cut short inside ENTITIES", "ends inside its ENTITIES section", "cut short")
 refused(2, { file = write(".dxf", E0 .. "0\nLWPOLYLINE\n8\nA\n90\n4\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n"
@@ -300,9 +301,6 @@ local function stack(fmt)
   end
   model { dim = 3, mu = 0.6 }
   local b = import { file = write(".obj", table.concat(out, "\n")), support = "ground" }
-  if fmt == "%.6f" then
-    T.near(stats().tol, 10 * b.resolution, 1e-12, "OBJ at 6 decimals: the detection's tolerance 10 times its resolution")
-  end
   load { live = "horizontal", direction = turned { 0, 1, 0 } }
   return solve { flow = "associative" }.alpha
 end
@@ -423,13 +421,20 @@ model { mu = 10 }
 local coarse = import { file = write(".dxf", half_disc(1, -1, 1)), support = "ground", arc_step = 10 }
 T.near(current():block_info(coarse[1]).area, 9 * math.sin(math.rad(10)), 1e-12,
        "DXF arc: arc_step = 10 gives 18 chords, area 18 sin(10 deg) / 2")
--- mirrored (drawn from below), the arc turns the other way: the half disc
--- lies below its diameter, on the other side of x = 0
+-- mirrored (drawn from below): the half disc on (3, 5)-(1, 5), arc above,
+-- comes in on (-3, 5)-(-1, 5), its arc still above its diameter
 model { mu = 10 }
 local down = import { file = write(".dxf", dxf("", "0\nLWPOLYLINE\n8\nstone\n90\n2\n70\n1\n210\n0\n220\n0\n230\n-1\n"
-  .. "10\n1\n20\n5\n42\n1\n10\n-1\n20\n5\n")) }
-T.near(current():block_info(down[1]).centroid[2], 5 + 4 / (3 * math.pi), 4e-6,
-       "DXF arc: a half disc drawn from below is mirrored in x, its arc still above its diameter")
+  .. "10\n3\n20\n5\n42\n1\n10\n1\n20\n5\n")) }
+local dc = current():block_info(down[1]).centroid
+T.ok(math.abs(dc[1] + 2) < 1e-9 and math.abs(dc[2] - 5 - 4 / (3 * math.pi)) < 2e-6,
+     "DXF arc: a half disc drawn from below is mirrored in x, its arc still above its diameter",
+     ("%.9g %.9g"):format(dc[1], dc[2]))
+-- an R12 POLYLINE whose VERTEX carries the bulge: the same half disc
+model { mu = 10 }
+local r12 = import { file = write(".dxf", dxf("", "0\nPOLYLINE\n8\nstone\n66\n1\n70\n1\n0\nVERTEX\n8\nstone\n10\n1\n20\n0\n"
+  .. "42\n1\n0\nVERTEX\n8\nstone\n10\n-1\n20\n0\n0\nSEQEND\n")) }
+T.near(current():block_info(r12[1]).area, math.pi / 2, 4e-6, "DXF arc: a POLYLINE's VERTEX bulge, the half disc")
 -- A stone seated in a bowl: the seat's arc and the stone's, drawn in
 -- opposite senses by two polylines, meet on every chord.
 model { mu = 0.6 }
@@ -524,6 +529,58 @@ local bad = table.concat(B, "\n"):gsub("10\n400\n20\n175\n10\n0\n20\n175\n", "10
 T.raises(function() import { file = write(".dxf", bad .. "\n"), scale = 0.001, support = "GROUND" } end,
          "DXF INSERT: a flat brick refused", "(layer 'stones', block 'brick' placed at line", "zero area")
 T.eq(stats().blocks + stats().supports, 0, "DXF INSERT: refused, the model as it was")
+
+-- An L (area 4, centroid (0.75, 1.25), base point at its corner) placed
+-- by INSERT turned 90 degrees counter-clockwise and scaled (2, 3) at
+-- (10, 20): x -> 10 - 3 y, y -> 20 + 2 x, centroid (6.25, 21.5), area 24;
+-- as a MINSERT of 2 columns 5 apart the second copy 5 along the turned x,
+-- (6.25, 26.5); drawn from below (extrusion -z) at (10, 20) unturned, x
+-- mirrored: (-10.75, 21.25).  The BLOCKS section after ENTITIES, as some
+-- programs write it; an xref's INSERT left out.
+local Lblock = "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nL\n70\n0\n10\n0\n20\n0\n0\nLWPOLYLINE\n8\n0\n70\n1\n"
+  .. "10\n0\n20\n0\n10\n2\n20\n0\n10\n2\n20\n1\n10\n1\n20\n1\n10\n1\n20\n3\n10\n0\n20\n3\n0\nENDBLK\n"
+  .. "0\nBLOCK\n2\nx\n70\n4\n10\n0\n20\n0\n0\nENDBLK\n0\nENDSEC\n"
+local function placed(insert)
+  model {}
+  local b = import { file = write(".dxf", "0\nSECTION\n2\nENTITIES\n" .. insert .. "0\nINSERT\n8\nA\n2\nx\n10\n0\n20\n0\n"
+                                     .. "0\nENDSEC\n" .. Lblock .. "0\nEOF\n") }
+  local out = {}
+  for i, k in ipairs(b) do out[i] = current():block_info(k) end
+  return out, b
+end
+local t1, tb = placed("0\nINSERT\n8\nA\n2\nL\n10\n10\n20\n20\n41\n2\n42\n3\n50\n90\n")
+T.ok(#t1 == 1 and math.abs(t1[1].centroid[1] - 6.25) < 1e-12 and math.abs(t1[1].centroid[2] - 21.5) < 1e-12
+     and math.abs(t1[1].area - 24) < 1e-12, "DXF INSERT turned 90 degrees and scaled (2, 3): centroid and area",
+     ("%d %.15g %.15g %.15g"):format(#t1, t1[1].centroid[1], t1[1].centroid[2], t1[1].area))
+T.ok(tostring(tb.skipped):find("INSERT of block 'x', a reference to another drawing", 1, true),
+     "DXF: an xref's INSERT left out, and said so", tostring(tb.skipped))
+local t2 = placed("0\nINSERT\n8\nA\n2\nL\n10\n10\n20\n20\n41\n2\n42\n3\n50\n90\n70\n2\n44\n5\n")
+T.ok(#t2 == 2 and math.abs(t2[2].centroid[1] - 6.25) < 1e-12 and math.abs(t2[2].centroid[2] - 26.5) < 1e-12,
+     "DXF MINSERT turned and scaled: the column step along the turned x, unscaled",
+     ("%d %.15g %.15g"):format(#t2, t2[2] and t2[2].centroid[1] or 0, t2[2] and t2[2].centroid[2] or 0))
+local t3 = placed("0\nINSERT\n8\nA\n2\nL\n10\n10\n20\n20\n210\n0\n220\n0\n230\n-1\n")
+T.ok(math.abs(t3[1].centroid[1] + 10.75) < 1e-12 and math.abs(t3[1].centroid[2] - 21.25) < 1e-12,
+     "DXF INSERT drawn from below: mirrored in x", ("%.15g %.15g"):format(t3[1].centroid[1], t3[1].centroid[2]))
+
+-- Precision read from how a file writes its numbers: short as they go
+-- (a wall in metres, "0.5", "1.2"): taken as exact, the default tolerance
+-- (a tenth of a metre made it lose its joints); fixed to 3 decimals: the
+-- tolerance at most a thousandth of a block
+model { mu = 0.6 }
+local short = import { file = write(".dxf", dxf("", lw("stones", { { 0, 0 }, { 1, 0 }, { 1, 0.5 }, { 0, 0.5 } })
+  .. lw("stones", { { 1, 0 }, { 2.2, 0 }, { 2.2, 0.5 }, { 1, 0.5 } })
+  .. lw("ground", { { -1, -0.5 }, { 3, -0.5 }, { 3, 0 }, { -1, 0 } }))), support = "ground" }
+T.ok(short.resolution == nil and stats().tol < 1e-7 and contacts {} == 3,
+     "DXF of short numbers: exact, the default tolerance, 3 interfaces",
+     ("%s %g"):format(tostring(short.resolution), stats().tol))
+model { mu = 0.6 }
+local fixed3 = import { file = write(".dxf", dxf("", ("0\nLWPOLYLINE\n8\nstone\n90\n4\n70\n1\n10\n0.000\n20\n0.000\n"
+  .. "10\n0.400\n20\n0.000\n10\n0.400\n20\n0.175\n10\n0.000\n20\n0.175\n")
+  .. "0\nLWPOLYLINE\n8\nground\n90\n4\n70\n1\n10\n-1.000\n20\n-0.500\n10\n1.000\n20\n-0.500\n10\n1.000\n20\n0.000\n"
+  .. "10\n-1.000\n20\n0.000\n")), support = "ground" }
+T.ok(fixed3.resolution == 1e-3 and math.abs(stats().tol - 1e-3 * (math.sqrt(0.4 * 0.175) + 1) / 2) < 1e-15,
+     "DXF of 3 fixed decimals: resolution 1e-3, the tolerance capped at 1e-3 of the typical block (mean sqrt area)",
+     ("%s %g"):format(tostring(fixed3.resolution), stats().tol))
 
 for _, f in ipairs(files) do os.remove(f) end
 T.done()
