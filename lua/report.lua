@@ -278,6 +278,35 @@ function Result.vtk(r, file)
   report.vtk(r._solution, file)
 end
 
+-- r:json(file): the result's fields as JSON (doc/guide.md, "Files"), by
+-- lua-cjson: tables read raw, fields whose names begin with "_", functions
+-- and userdata left out, NaN and infinities null, numbers to 14 digits.
+function Result.json(r, file)
+  if type(r) ~= "table" or r._solution == nil then error("json: call it on a result with a colon: r:json(file)", 2) end
+  if type(file) ~= "string" then error(("json: expects a file name, got %s"):format(type(file)), 2) end
+  local found, cjson = pcall(require, "cjson")
+  if not found then error("json: needs Lua's cjson module (the Debian package lua-cjson): " .. tostring(cjson), 2) end
+  local json = cjson.new()
+  json.encode_number_precision(14) -- the most lua-cjson writes
+  json.encode_invalid_numbers("null")
+  json.encode_sparse_array(true) -- a list with holes: null in them, or an object if mostly holes
+  local function plain(v, depth)
+    if type(v) == "function" or type(v) == "userdata" or type(v) == "thread" then return nil end
+    if type(v) ~= "table" then return v end
+    if depth > 20 then error("json: the result nests more than 20 tables deep", 3) end
+    local out = {}
+    for k, x in next, v do
+      if not (type(k) == "string" and k:sub(1, 1) == "_") then out[k] = plain(x, depth + 1) end
+    end
+    return out
+  end
+  local text = json.encode(plain(r, 0))
+  local f, why = io.open(file, "w")
+  if not f then error("json: cannot write " .. tostring(why), 2) end
+  f:write(text, "\n")
+  f:close()
+end
+
 -- One line per interface and per block velocity, for the prompt.
 function Interface.__tostring(k)
   local s = ("interface %d-%d: %s, N = %.4g, T = %.4g"):format(k.a, k.b, k.state, k.N, k.T)

@@ -30,6 +30,40 @@ T.raises(function() r:svg(42) end, "svg: file name checked", "svg")
 T.raises(function() r:png(png, { size = 3 }) end, "png: unknown option", "unknown field 'size'")
 os.remove(svg); os.remove(png)
 
+-- r:json: the result's fields, read back by lua-cjson itself, as print(r)
+-- and the table have them (numbers to 14 digits); NaN and infinity null
+local json = dir .. "/blocklim_test_w4.json"
+local cjson = require "cjson"
+local function read_json(file)
+  local fh = io.open(file, "rb")
+  local t = fh and cjson.decode(fh:read("a"))
+  if fh then fh:close() end
+  return t
+end
+r:json(json)
+local back = read_json(json)
+T.ok(back and math.abs(back.alpha - r.alpha) <= 1e-13 * r.alpha and back.status == r.status
+     and back.verified == r.verified and #back.interfaces == #r.interfaces and back._solution == nil,
+     "json: alpha, status, verified and the interfaces of W4 read back")
+local k = #r.interfaces
+T.ok(back and back.interfaces[k].state == r.interfaces[k].state and back.interfaces[k].a == r.interfaces[k].a
+     and math.abs(back.interfaces[k].N - r.interfaces[k].N) <= 1e-12 * (1 + math.abs(r.interfaces[k].N))
+     and #back.mechanism == #r.mechanism and #back.history == #r.history,
+     "json: an interface's state, blocks and force, the mechanism and the history of every start")
+model { mu = 0.65 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+load { live = "horizontal", direction = { 0, -1 } }
+local pressed = solve {}
+pressed:json(json)
+back = read_json(json)
+T.ok(pressed.alpha == math.huge and back and back.alpha == cjson.null and back.status == "unbounded",
+     "json: an infinite alpha written as null", tostring(back and back.alpha))
+T.raises(function() r:json(42) end, "json: file name checked", "json: expects a file name")
+T.raises(function() r.json({}, json) end, "json: called on a result", "json: call it on a result")
+T.raises(function() r:json("/nonexistent/dir/x.json") end, "json: unwritable file reported", "json: cannot write")
+os.remove(json)
+
 -- 3D: a projection of the moved blocks, from a chosen view
 model { dim = 3, mu = 0.65 }
 wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
