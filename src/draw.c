@@ -495,6 +495,14 @@ static int marked3(const pic *P, int i)
            (st == BL_SLIDING || st == BL_SEPARATING || st == BL_ROCKING);
 }
 
+/* Whether the hinge from a to b, riding with block side, is seen end on:
+ * shorter on the canvas than a dot (joint3 draws it as one). */
+static int end_on_hinge(const pic *P, int side, bl_vec3 a, bl_vec3 b)
+{
+    bl_vec2 pa = dev(P, project(P, moved3(P, side, a))), pb = dev(P, project(P, moved3(P, side, b)));
+    return bl_v2_norm(bl_v2_sub(pb, pa)) < 5.0 * P->mark;
+}
+
 /* One piece of a 3D joint marker: edge e of the contact polygon (vertex 0)
  * or, on a rocking joint, its corner e alone (vertex 1).  A sliding joint
  * outlines its polygon blue, a separating one dashed orange; a rocking
@@ -508,8 +516,8 @@ static void joint3(cairo_t *cr, const pic *P, int i, int e, int vertex)
     int side = anchor3(P, f), e1 = (e + 1) % f->np;
     bl_vec2 a = dev(P, project(P, moved3(P, side, f->poly[e])));
     bl_vec2 b = dev(P, project(P, moved3(P, side, f->poly[e1])));
-    /* a hinge seen end on (shorter than a dot) is a dot */
-    if (vertex || (s->state[i] == BL_ROCKING && bl_v2_norm(bl_v2_sub(b, a)) < 5.0 * P->mark))
+    /* a hinge seen end on is a dot */
+    if (vertex || (s->state[i] == BL_ROCKING && end_on_hinge(P, side, f->poly[e], f->poly[e1])))
         hinge_dot(cr, P->mark, vertex ? a : bl_v2_scale(bl_v2_add(a, b), 0.5));
     else if (s->state[i] == BL_SLIDING) sliding_line(cr, P->mark, a, b);
     else if (s->state[i] == BL_SEPARATING) separating_line(cr, P->mark, a, b);
@@ -557,14 +565,15 @@ static int joint_pieces(const pic *P, int i, const int *face_off, const double *
             } else if (vertex) {
                 continue;
             }
-            /* an edge by its midpoint or either end (seen end on, a
-             * hinge's midpoint lies only on faces seen edgewise), in front
-             * of every face that holds one */
+            /* a piece by its point; a hinge seen end on (drawn as a dot,
+             * joint3) also by either end, as its midpoint lies only on
+             * faces seen edgewise */
             bl_vec3 q[3] = {vertex ? f->poly[e] : bl_v3_scale(bl_v3_add(f->poly[e], f->poly[e1]), 0.5),
                             f->poly[e], f->poly[e1]};
+            int end_on = !vertex && st == BL_ROCKING && end_on_hinge(P, side, q[1], q[2]);
             double d = -INFINITY;
             int seen = 0, rim = 0, blk[2] = {side, side == f->a ? f->b : f->a};
-            for (int c = 0; c < (vertex ? 1 : 3); c++)
+            for (int c = 0; c < (end_on ? 3 : 1); c++)
                 for (int j = 0; j < 2; j++) {
                     const bl_polyhedron *S = &m->blocks[blk[j]].solid;
                     for (int k = 0; k < S->nf; k++) {
@@ -573,12 +582,13 @@ static int joint_pieces(const pic *P, int i, const int *face_off, const double *
                         if (edgewise) dk = edge_on(P, blk[j], k);
                         if (isnan(dk) || !bl_polyhedron_on_face(S, k, q[c], 1e-6 * size)) continue;
                         seen |= j == 0;
-                        rim |= j == 0 && edgewise;
+                        rim |= j == 0 && edgewise && end_on;
                         d = fmax(d, dk);
                     }
                 }
-            /* on the outline of the block it rides with: in front of that
-             * block's faces (a base slab's front face hid a toe's hinge) */
+            /* a dot on the outline of the block it rides with: in front of
+             * that block's faces (a base slab's front face hid a toe's
+             * hinge) */
             for (int k = 0; rim && k < m->blocks[side].solid.nf; k++)
                 if (!isnan(depth[face_off[side] + k])) d = fmax(d, depth[face_off[side] + k]);
             if (!seen) continue;
