@@ -2,14 +2,15 @@
 -- (import.lua).
 --
 -- read(text, where, fail, step) -> shapes, skipped, digits
--- A shape is { name = layer, line, via, sagitta, points = {{x, y, z}, ...} }: every
+-- A shape is { name = layer, line, via, sagitta, stretch, points = {{x, y, z}, ...} }: every
 -- closed LWPOLYLINE, and every closed POLYLINE with its VERTEX entities up
 -- to SEQEND, of the ENTITIES section, in model space, and of the blocks
 -- that INSERT entities place there (nested, arrays of MINSERT), in world
 -- coordinates.  An entity drawn from below (extrusion (0, 0, -1)) is
 -- mirrored back.  An arc segment (a bulge) becomes chords of at most
 -- `step` radians each, on the arc (`sagitta`: the largest distance between
--- a shape's arcs and their chords); the same arc drawn from either end
+-- a shape's arcs and their chords; `stretch`: the most its INSERTs
+-- scale a length); the same arc drawn from either end
 -- gives the same points.  A point
 -- repeated next to itself, or the first point repeated at the end, is one
 -- point.  In a block, an entity on layer 0 takes the layer of its INSERT,
@@ -197,22 +198,23 @@ function M.read(text, where, fail, step)
   end
   -- a polyline's flags, elevation, space and points (each with the bulge
   -- of the segment it begins)
-  local function fields(e, layer)
+  local function fields(e, layer, uncounted)
+    local counted = not uncounted
     local f, pts = { flags = 0, layer = layer }, {}
     for _, p in ipairs(e) do
       local c = p.code
       if c == 70 then f.flags = integer(e, p, layer, "flags")
-      elseif c == 38 then f.elevation = number(e, p, layer, true)
+      elseif c == 38 then f.elevation = number(e, p, layer, counted)
       elseif c == 67 then f.paper = number(e, p, layer) == 1
       elseif c == 90 then f.count = math.tointeger(number(e, p, layer))
-      elseif c == 10 then pts[#pts + 1] = { number(e, p, layer, true), line = p.line }
+      elseif c == 10 then pts[#pts + 1] = { number(e, p, layer, counted), line = p.line }
       elseif c == 20 or c == 30 then
         local q, k = pts[#pts], c // 10
         if not q or q[k] ~= nil or (k == 3 and q[2] == nil) then
           fail(("%s: %s: group %d without the group %d before it"):format(where(p.line), what(e, layer), c,
                c - 10))
         end
-        q[k] = number(e, p, layer, true)
+        q[k] = number(e, p, layer, counted)
       elseif c == 42 then
         local b = number(e, p, layer)
         if math.abs(b) > 1e4 then
@@ -317,7 +319,7 @@ function M.read(text, where, fail, step)
       fail(("%s: %s: more than a million closed polylines"):format(where(e.line), what(e, f.layer)))
     end
     shapes[#shapes + 1] = { name = f.layer, line = e.line, points = out, via = into and into.via,
-                            sagitta = sagitta > 0 and sagitta or nil }
+                            sagitta = sagitta > 0 and sagitta or nil, stretch = stretch(T) }
   end
   local function insert(e, T, into, inside)
     local layer = layer_of(e, into)
@@ -423,7 +425,7 @@ function M.read(text, where, fail, step)
           for _, q in ipairs(pts) do q[3] = f.elevation or 0 end
           add(e, f, pts, T, into, inside)
         elseif e.type == "POLYLINE" then
-          local f, pts = fields(e, layer_of(e, into))
+          local f, pts = fields(e, layer_of(e, into), true) -- its point is a dummy but for its z
           if f.flags & (16 | 64) ~= 0 then
             fail(("%s: %s: a polygon or polyface mesh; a 2D model takes closed polylines"):format(where(e.line),
                  what(e, f.layer)))

@@ -276,9 +276,9 @@ return function(M)
 
     local blocks, names = {}, {}
     for i, s in ipairs(shapes) do
-      -- the block's own resolution: the file's, or its arcs' chords'
-      -- sagitta if coarser
-      local own = math.max(resolution or 0, (s.sagitta or 0) * scale)
+      -- the block's own resolution: the file's, as its INSERTs scale it,
+      -- or its arcs' chords' sagitta if coarser
+      local own = math.max((resolution or 0) * (s.stretch or 1), (s.sagitta or 0) * scale)
       local fields = { support = marks[i], density = t.density, resolution = own > 0 and own or nil }
       if solid then
         local d = 0

@@ -122,6 +122,12 @@ return function(M, fields)
                  i, l[3]))
           end
         end
+        for j, q in ipairs(openings) do
+          if l[3] >= q[3] and l[3] <= q[4] and l[1] < q[2] - JAMB and q[1] < l[2] - JAMB then
+            fail(fn, ("field 'lintel': the lintel over opening %d (course %d, %g to %g L) lies in opening %d")
+              :format(i, l[3], l[1], l[2], j))
+          end
+        end
         out[#out + 1] = l
       end
     end

@@ -179,8 +179,11 @@ function Result.__tostring(r)
         r.lp, r.iterations, size.rows, size.columns)
   end
   if r.cone then -- 3D: alpha depends on the pyramid that stands for Coulomb's cone
-    local c, bound = r.cone, ""
-    if r.flow == "associative" and c.kind ~= "adaptive" then
+    local c, bound, friction = r.cone, "", false
+    for _, joint in ipairs(r.interfaces or {}) do
+      friction = friction or (joint.mu > 0 and joint.mu < math.huge) -- else no pyramid bounds anything
+    end
+    if r.flow == "associative" and c.kind ~= "adaptive" and friction then
       bound = c.kind == "inscribed" and " (the cone's alpha is at least this)" or " (the cone's alpha is at most this)"
     end
     if c.kind == "adaptive" then
@@ -324,6 +327,7 @@ end
 -- Lists of block numbers made by a generator print as ranges.
 local Blocks = {}
 function Blocks.__tostring(list)
+  if #list == 0 then return "no blocks" end
   local parts, i = {}, 1
   while i <= #list do
     local j = i

@@ -449,6 +449,16 @@ int bl_contact_detect(bl_model *m, bl_error *err)
                  m->dim == 3 ? "faces" : "edges", gap, tol);
         list(msg, sizeof msg, pr.near, pr.nnear < 5 ? pr.nnear : 5, pr.nnear);
     }
+    /* blocks from a rounded file: the rounding may be the cause, and a
+     * larger tol the cure (the default stops at 1e-3 of a typical block) */
+    double resolution = 0.0;
+    for (int i = 0; i < n; i++) resolution = fmax(resolution, m->blocks[i].resolution);
+    if ((pr.noverlap || pr.nnear) && resolution > 0.0 && m->contact_tol <= 0.0) {
+        size_t len = strlen(msg);
+        snprintf(msg + len, sizeof msg - len, " (imported blocks are drawn to %.3g, the file's rounding or their "
+                 "arcs' chords: if that is the cause, contacts{ tol = %.3g } takes edges that close as touching)",
+                 resolution, 2.0 * resolution);
+    }
     for (int s = 0; s < m->njoints && !msg[0]; s++)
         if (apply_joint(m, &m->joints[s], err)) {
             /* an interface{} given before, which these contacts do not

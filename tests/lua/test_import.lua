@@ -582,5 +582,25 @@ T.ok(fixed3.resolution == 1e-3 and math.abs(stats().tol - 1e-3 * (math.sqrt(0.4 
      "DXF of 3 fixed decimals: resolution 1e-3, the tolerance capped at 1e-3 of the typical block (mean sqrt area)",
      ("%s %g"):format(tostring(fixed3.resolution), stats().tol))
 
+-- Five bricks 0.25 long on a 17-degree ramp, written with 3 fixed decimals
+-- in metres: the rounding (1e-3) exceeds the default tolerance's cap
+-- (1e-3 of a block), detection fails, and says that a tol of twice the
+-- rounding would count the edges as touching; it does
+local ramp = {}
+local c17, s17 = math.cos(math.rad(17)), math.sin(math.rad(17))
+local function on_ramp(x, y) return ("10\n%.3f\n20\n%.3f\n"):format(x * c17 - y * s17, x * s17 + y * c17) end
+for i = 0, 4 do
+  ramp[#ramp + 1] = "0\nLWPOLYLINE\n8\nstones\n90\n4\n70\n1\n" .. on_ramp(0.25 * i, 0) .. on_ramp(0.25 * i + 0.25, 0)
+                    .. on_ramp(0.25 * i + 0.25, 0.1) .. on_ramp(0.25 * i, 0.1)
+end
+ramp[#ramp + 1] = "0\nLWPOLYLINE\n8\nground\n90\n4\n70\n1\n" .. on_ramp(-0.5, -0.3) .. on_ramp(1.75, -0.3)
+                  .. on_ramp(1.75, 0) .. on_ramp(-0.5, 0)
+local ramp_file = write(".dxf", dxf("", table.concat(ramp)))
+model { mu = 0.6 }
+import { file = ramp_file, support = "ground" }
+T.raises(function() contacts {} end, "DXF rounded to 1e-3 on a ramp: detection fails and names the cure",
+         "imported blocks are drawn to 0.001", "contacts{ tol = 0.002 }")
+T.eq(contacts { tol = 0.002 }, 9, "DXF rounded to 1e-3 on a ramp: with tol = 0.002, the 9 joints of 5 bricks on a ramp")
+
 for _, f in ipairs(files) do os.remove(f) end
 T.done()

@@ -741,6 +741,16 @@ do
                                openings = { { 1, 2, 2, 3 }, { 2.5, 3.5, 1, 3 } }, lintel = 0.5 } end,
            "facade{ lintel } whose stones would overlap refused",
            "facade: field 'lintel': the lintels over openings 1 and 2 overlap in course 4")
+  -- a lintel in another opening (a door under a window; two openings side
+  -- by side): refused, not a stone in the void (a tester's find)
+  T.raises(function() facade { length = 6, returns = 2, courses = 6, unit = { 0.4, 0.2 },
+                               openings = { { 2, 3, 1, 2 }, { 2, 3, 3, 4 } }, lintel = 0.5 } end,
+           "facade{ lintel } inside the opening above refused",
+           "facade: field 'lintel': the lintel over opening 1 (course 3, 1.5 to 3.5 L) lies in opening 2")
+  T.raises(function() facade { length = 6, returns = 2, courses = 6, unit = { 0.4, 0.2 },
+                               openings = { { 1, 2.5, 1, 3 }, { 2.5, 4, 1, 2 } }, lintel = 0.5 } end,
+           "facade{ lintel } reaching into the opening beside refused",
+           "facade: field 'lintel': the lintel over opening 2 (course 3, 2 to 4.5 L) lies in opening 1")
 end
 -- bond{} with openings: without lintels the bricks over them hang on their
 -- head joints; with them (bearing L/2) the wall of 8 L x 10 courses with a
