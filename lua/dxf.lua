@@ -15,7 +15,8 @@
 -- repeated next to itself, or the first point repeated at the end, is one
 -- point.  In a block, an entity on layer 0 takes the layer of its INSERT,
 -- and `via` names the block and the INSERT's line.  Everything else is
--- listed in `skipped` ("line 40: LINE"; an inserted block's once).
+-- listed in `skipped` ("line 40: LINE"; an inserted block's once), and so
+-- are polylines on layers frozen or turned off.
 -- Files before AutoCAD 2007 (R12 to 2004) write names in their code page:
 -- Windows-1252 is read as such; "\U+00E4" escapes are read in every file.
 -- `digits[d]` counts the polylines' coordinates written with d decimals
@@ -105,6 +106,7 @@ function M.read(text, where, fail, step)
   -- the header's code page and version, the entities of ENTITIES, and the
   -- blocks of BLOCKS, each with its entities (BLOCK to ENDBLK)
   local version, codepage, entities, blocks, section, closed = "", "", {}, {}, nil, false
+  local layers, layer = {}, nil -- the LAYER records of TABLES, each the pairs after its "0 LAYER"
   local block, into = nil, nil -- the block being read, and the list its pairs go to
   for i, p in ipairs(pairs_) do
     local prev = pairs_[i - 1]
@@ -124,6 +126,13 @@ function M.read(text, where, fail, step)
         into = entities[#entities]
       elseif into then
         into[#into + 1] = p
+      end
+    elseif section == "TABLES" then
+      if p.code == 0 then
+        layer = p.value == "LAYER" and {} or nil
+        layers[#layers + 1] = layer
+      elseif layer then
+        layer[#layer + 1] = p
       end
     elseif section == "BLOCKS" then
       if p.code == 0 and p.value == "BLOCK" then
@@ -149,6 +158,18 @@ function M.read(text, where, fail, step)
          :format(where(last and last.line or 1)))
   end
   local cp1252 = version < "AC1021" and codepage:upper() == "ANSI_1252"
+  -- layers frozen (flag 1) or off (a negative colour): what lies on them
+  -- is not shown, and not taken
+  local hidden = {}
+  for _, l in ipairs(layers) do
+    local name, frozen, off
+    for _, p in ipairs(l) do
+      if p.code == 2 then name = decode(p.value, cp1252) end
+      if p.code == 70 then frozen = (math.tointeger(tonumber(p.value)) or 0) & 1 == 1 end
+      if p.code == 62 then off = (tonumber(p.value) or 0) < 0 end
+    end
+    if name and (frozen or off) then hidden[name] = frozen and "a frozen layer" or "a layer turned off" end
+  end
 
   local shapes, skipped, digits = {}, {}, {}
   local function what(e, layer) return ("%s on layer '%s'"):format(e.type, layer) end
@@ -292,6 +313,7 @@ function M.read(text, where, fail, step)
   end
   local function add(e, f, pts, T, into, inside)
     if f.paper then return skip(e, what(e, f.layer) .. " in paper space", inside) end
+    if hidden[f.layer] then return skip(e, ("%s, %s"):format(what(e, f.layer), hidden[f.layer]), inside) end
     local kept = {}
     for _, q in ipairs(pts) do
       local r = kept[#kept]

@@ -582,6 +582,19 @@ T.ok(fixed3.resolution == 1e-3 and math.abs(stats().tol - 1e-3 * (math.sqrt(0.4 
      "DXF of 3 fixed decimals: resolution 1e-3, the tolerance capped at 1e-3 of the typical block (mean sqrt area)",
      ("%s %g"):format(tostring(fixed3.resolution), stats().tol))
 
+-- Closed polylines on a frozen layer (a drawing frame) and on one turned
+-- off are not shown in the CAD program, and not taken (they overlapped the
+-- stones); the LAYER table as R2000 files write it
+model { mu = 0.6 }
+local hid = import { file = write(".dxf", "0\nSECTION\n2\nTABLES\n0\nTABLE\n2\nLAYER\n70\n2\n"
+  .. "0\nLAYER\n2\nframe\n70\n1\n62\n7\n0\nLAYER\n2\naux\n70\n0\n62\n-3\n0\nENDTAB\n0\nENDSEC\n"
+  .. "0\nSECTION\n2\nENTITIES\n" .. lw("stone", sq) .. lw("frame", { { -5, -5 }, { 5, -5 }, { 5, 5 }, { -5, 5 } })
+  .. lw("aux", { { 0, 0 }, { 0.5, 0 }, { 0.5, 0.5 } }) .. lw("ground", { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } })
+  .. "0\nENDSEC\n0\nEOF\n"), support = "ground" }
+T.ok(#hid == 2 and tostring(hid.skipped):find("layer 'frame', a frozen layer", 1, true)
+     and tostring(hid.skipped):find("layer 'aux', a layer turned off", 1, true),
+     "DXF: polylines on frozen and switched-off layers left out, and said so", tostring(hid.skipped))
+
 -- Five bricks 0.25 long on a 17-degree ramp, written with 3 fixed decimals
 -- in metres: the rounding (1e-3) exceeds the default tolerance's cap
 -- (1e-3 of a block), detection fails, and says that a tol of twice the
