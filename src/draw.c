@@ -566,8 +566,8 @@ static int joint_pieces(const pic *P, int i, const int *face_off, const double *
                 continue;
             }
             /* a piece by its point; a hinge seen end on (drawn as a dot,
-             * joint3) also by either end, as its midpoint lies only on
-             * faces seen edgewise */
+             * joint3) also by either end and on faces seen edgewise, where
+             * its midpoint lies */
             bl_vec3 q[3] = {vertex ? f->poly[e] : bl_v3_scale(bl_v3_add(f->poly[e], f->poly[e1]), 0.5),
                             f->poly[e], f->poly[e1]};
             int end_on = !vertex && st == BL_ROCKING && end_on_hinge(P, side, q[1], q[2]);
@@ -578,11 +578,11 @@ static int joint_pieces(const pic *P, int i, const int *face_off, const double *
                     const bl_polyhedron *S = &m->blocks[blk[j]].solid;
                     for (int k = 0; k < S->nf; k++) {
                         double dk = depth[face_off[blk[j]] + k];
-                        int edgewise = isnan(dk);
+                        int edgewise = isnan(dk) && end_on;
                         if (edgewise) dk = edge_on(P, blk[j], k);
                         if (isnan(dk) || !bl_polyhedron_on_face(S, k, q[c], 1e-6 * size)) continue;
                         seen |= j == 0;
-                        rim |= j == 0 && edgewise && end_on;
+                        rim |= j == 0 && edgewise;
                         d = fmax(d, dk);
                     }
                 }
