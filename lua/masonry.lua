@@ -104,7 +104,7 @@ return function(M, fields)
   -- nil.  Each opening whose top course c1 is below the last gets a
   -- lintel in course c1 + 1 from x0 - b to x1 + b (within lo..hi), one
   -- stone through the wall's thickness: {x0, x1, course} each, refused
-  -- where two in one course would overlap.
+  -- where two in one course would overlap or one would lie in an opening.
   local function lintels_field(fn, t, openings, lo, hi, courses)
     local b = t.lintel
     if b == nil then return {} end
