@@ -396,8 +396,12 @@ function M.read(text, where, fail, step)
     local c, sn = math.cos(turn), math.sin(turn)
     local deeper = setmetatable({ [b] = true }, { __index = names })
     local here = ("block '%s' placed at line %d"):format(name, e.line)
-    local next_into = { layer = layer, names = deeper, via = into and (here .. ", " .. into.via) or here,
-                        depth = (into and into.depth or 0) + 1, copies = copies }
+    -- the chain of placements, innermost first, the outer ones after the
+    -- third left out
+    local depth, places = (into and into.depth or 0) + 1, { here }
+    for k = 1, math.min(2, into and #into.places or 0) do places[k + 1] = into.places[k] end
+    local via = table.concat(places, ", ") .. (depth > 3 and (", ... (%d in all)"):format(depth) or "")
+    local next_into = { layer = layer, names = deeper, via = via, places = places, depth = depth, copies = copies }
     for row = 0, rows - 1 do
       for col = 0, cols - 1 do
         -- scale about the base point, shift by the array's step in the

@@ -595,6 +595,21 @@ T.ok(#hid == 2 and tostring(hid.skipped):find("layer 'frame', a frozen layer", 1
      and tostring(hid.skipped):find("layer 'aux', a layer turned off", 1, true),
      "DXF: polylines on frozen and switched-off layers left out, and said so", tostring(hid.skipped))
 
+-- Blocks nested 40 deep: refused at the 33rd INSERT, the message naming
+-- the three innermost placements and the depth (it listed all of them)
+local nest = { "0\nSECTION\n2\nBLOCKS\n" }
+for k = 1, 40 do
+  nest[#nest + 1] = ("0\nBLOCK\n2\nb%d\n10\n0\n20\n0\n"):format(k)
+  nest[#nest + 1] = k < 40 and ("0\nINSERT\n8\n0\n2\nb%d\n10\n0\n20\n0\n"):format(k + 1) or square
+  nest[#nest + 1] = "0\nENDBLK\n"
+end
+nest[#nest + 1] = "0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nINSERT\n8\nA\n2\nb1\n10\n0\n20\n0\n0\nENDSEC\n0\nEOF\n"
+model {}
+local nested_ok, nested_why = pcall(import, { file = write(".dxf", table.concat(nest)) })
+T.ok(not nested_ok and tostring(nested_why):find("(block 'b32' placed at line", 1, true)
+     and tostring(nested_why):find(", ... (32 in all)): INSERT on layer 'A': blocks nested more than 32 deep", 1, true),
+     "DXF: blocks nested too deep refused, the chain shortened", tostring(nested_why))
+
 -- Five bricks 0.25 long on a 17-degree ramp, written with 3 fixed decimals
 -- in metres: the rounding (1e-3) exceeds the default tolerance's cap
 -- (1e-3 of a block), detection fails, and says that a tol of twice the
