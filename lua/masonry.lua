@@ -45,7 +45,7 @@ local report = require "blocklim.report"
 
 return function(M, fields)
   local fail, number_list, check = fields.fail, fields.number_list, fields.check
-  local positive_integer = fields.positive_integer
+  local positive_integer, flag = fields.positive_integer, fields.flag
 
   -- t.openings of command fn: a list of {x0, x1, c0, c1}, x in units of L
   -- from lo to hi, courses from 1 to `courses`
@@ -161,9 +161,7 @@ return function(M, fields)
   -- slab's (nil without one)
   local function placement(fn, t)
     local at = t.at ~= nil and number_list(fn, t, "at", 3) or { 0, 0, 0 }
-    if t.base ~= nil and type(t.base) ~= "boolean" then
-      fail(fn, "field 'base' must be true or false, got " .. report.show(t.base))
-    end
+    flag(fn, t, "base")
     local function box(f)
       f.at = { f.at[1] + at[1], f.at[2] + at[2], f.at[3] + at[3] }
       return M.box(f)

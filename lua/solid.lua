@@ -51,6 +51,13 @@ return function(M)
     if m:dim() ~= 3 then fail(fn, "makes 3D blocks; start a model with model{ dim = 3 }", 4) end
   end
 
+  -- a field that is true or false, if given
+  local function flag(fn, t, k)
+    if t[k] ~= nil and type(t[k]) ~= "boolean" then
+      fail(fn, ("field '%s' must be true or false, got %s"):format(k, report.show(t[k])), 4)
+    end
+  end
+
   -- an integer, or a float of integral value (10 / 2)
   local function positive_integer(fn, t, k, min)
     local v = math.type(t[k]) and math.tointeger(t[k])
@@ -89,9 +96,7 @@ return function(M)
   function M.dome(t)
     check("dome", t, { radius = true, thickness = true, rings = true, segments = true,
                        centre = true, density = true, base = true })
-    if t.base ~= nil and type(t.base) ~= "boolean" then
-      fail("dome", "field 'base' must be true or false, got " .. report.show(t.base))
-    end
+    flag("dome", t, "base")
     local function positive(k)
       if type(t[k]) ~= "number" or not (t[k] > 0) or t[k] == math.huge then
         fail("dome", ("field '%s' must be a positive number, got %s"):format(k, report.show(t[k])))
@@ -177,5 +182,5 @@ return function(M)
 
   -- the checks, for the other 3D generators (masonry.lua)
   return { fail = fail, number_list = number_list, check = check,
-           positive_integer = positive_integer }
+           positive_integer = positive_integer, flag = flag }
 end

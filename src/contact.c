@@ -5,13 +5,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The coarsest resolution of the blocks' coordinates (0: all exact). */
+static double coarsest(const bl_model *m)
+{
+    double r = 0.0;
+    for (int i = 0; i < m->nblocks; i++) r = fmax(r, m->blocks[i].resolution);
+    return r;
+}
+
 void bl_contact_tolerances(const bl_model *m, double *tol, double *gap)
 {
-    double typical = 0.0, resolution = 0.0;
-    for (int i = 0; i < m->nblocks; i++) {
+    double typical = 0.0, resolution = coarsest(m);
+    for (int i = 0; i < m->nblocks; i++)
         typical += m->dim == 3 ? cbrt(m->blocks[i].volume) : sqrt(m->blocks[i].area);
-        resolution = fmax(resolution, m->blocks[i].resolution);
-    }
     if (m->nblocks) typical /= m->nblocks;
     /* by default, faces that meet to the last digit of a file's numbers
      * (or to an arc's chords; doc/guide.md, import) touch: 10 times the
@@ -451,8 +457,7 @@ int bl_contact_detect(bl_model *m, bl_error *err)
     }
     /* blocks from a rounded file: the rounding may be the cause, and a
      * larger tol the cure (the default stops at 1e-3 of a typical block) */
-    double resolution = 0.0;
-    for (int i = 0; i < n; i++) resolution = fmax(resolution, m->blocks[i].resolution);
+    double resolution = coarsest(m);
     if ((pr.noverlap || pr.nnear) && resolution > 0.0 && m->contact_tol <= 0.0) {
         size_t len = strlen(msg);
         snprintf(msg + len, sizeof msg - len, " (imported blocks are drawn to %.3g, the file's rounding or their "
