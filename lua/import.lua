@@ -7,7 +7,8 @@
 -- when it is closed and convex (to the precision of the file's numbers),
 -- else the polyhedron of its faces (a face that the file's rounding has
 -- bent, cut into triangles).  The shapes whose names (objects, groups,
--- layers) equal `support` or match it as a Lua pattern are supports.
+-- layers) equal `support` or match it as a Lua pattern are supports (a
+-- DXF's layer names ignoring case).
 -- Returns the block numbers, with `.names` (each block's name), `.skipped`
 -- (what the file has that is no block, by line) and `.resolution` (the
 -- precision of its numbers, scaled; nil where they are whole).
@@ -197,9 +198,19 @@ return function(M)
       fail("field 'support' must be a name, a Lua pattern or a function of a name, got " .. type(support))
     end
     if type(support) == "string" then
-      local given = support
+      -- a DXF's layer names, like the CAD program's, ignore case: the name
+      -- and the pattern in lower case, but the letter after a % as it is
+      -- (%A is not %a)
+      local given, fold = support, function(s) return s end
+      if format == "dxf" then
+        fold = string.lower
+        given = given:gsub("(%%?)(.)", function(pc, c) return pc == "" and c:lower() or pc .. c end)
+      end
       local valid = pcall(string.find, "", given)
-      support = function(name) return name == given or valid and name:find(given) ~= nil end
+      support = function(name)
+        name = fold(name)
+        return name == given or valid and name:find(given) ~= nil
+      end
     end
 
     local fh, why = io.open(t.file, "rb")

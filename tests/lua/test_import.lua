@@ -150,6 +150,18 @@ T.ok(d.skipped[1] and d.skipped[1]:find("LINE", 1, true) and d.skipped[2]:find("
 load { live = "horizontal" }
 T.near(solve { flow = "associative" }.alpha, want, 1e-9, "DXF W1 in mm: the alpha of wall{}'s W1")
 
+-- DXF layer names ignore case, as in the CAD program: "ground" and a
+-- pattern in lower case name layer GROUND; %U (not a lower-case letter)
+-- keeps its case
+for _, given in ipairs { "ground", "^gr%Uund$" } do
+  model { mu = 0.65 }
+  import { file = w1dxf, scale = 0.001, support = given }
+  T.eq(stats().supports, 1, ("DXF: support = %q names layer GROUND"):format(given))
+end
+model { mu = 0.65 }
+T.raises(function() import { file = w1dxf, scale = 0.001, support = "^gr%Lund$" } end,
+         "DXF: a pattern's %L keeps its case (no layer matches)", "matches no name")
+
 model { mu = 0.65 }
 import { file = w1obj, plane = "xz", support = function(name) return name == "GROUND" end }
 T.eq(stats().supports, 1, "OBJ 2D: 'support' as a function of the name")
