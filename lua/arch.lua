@@ -23,7 +23,7 @@ return function(M, load_ratio)
   local function positive(t, k)
     local v = t[k]
     if type(v) ~= "number" or not (v > 0) or v == math.huge then
-      fail(("field '%s' must be a positive number, got %s"):format(k, tostring(v)))
+      fail(("field '%s' must be a positive number, got %s"):format(k, report.show(v)))
     end
     return v
   end
@@ -56,7 +56,7 @@ return function(M, load_ratio)
     end
     local n = math.type(t.n) and math.tointeger(t.n) -- 10/2 as well as 5
     if not n or n < 1 then
-      fail("field 'n' must be a positive integer (the number of voussoirs), got " .. tostring(t.n))
+      fail("field 'n' must be a positive integer (the number of voussoirs), got " .. report.show(t.n))
     end
     local angle = t.angle or 180
     if type(angle) ~= "number" or not (angle > 0 and angle <= 360) then
@@ -124,7 +124,7 @@ return function(M, load_ratio)
       length = positive(t, "length")
       segments = math.type(segments) and math.tointeger(segments)
       if not segments or segments < 1 then
-        fail("field 'segments' must be a positive integer, got " .. tostring(t.segments))
+        fail("field 'segments' must be a positive integer, got " .. report.show(t.segments))
       end
     elseif t.length ~= nil or t.segments ~= nil then
       fail("fields 'length' and 'segments' are for barrel vaults in 3D models (model{ dim = 3 })")

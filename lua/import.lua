@@ -180,11 +180,11 @@ return function(M)
     end
     local scale = t.scale or 1
     if not finite(scale) or not (scale > 0) then
-      fail("field 'scale' must be a positive number, got " .. tostring(t.scale))
+      fail("field 'scale' must be a positive number, got " .. report.show(t.scale))
     end
     local axes = planes[t.plane or "xy"]
     if not axes then
-      fail(("field 'plane' must be \"xy\", \"xz\" or \"yz\", got %s"):format(tostring(t.plane)))
+      fail(("field 'plane' must be \"xy\", \"xz\" or \"yz\", got %s"):format(report.show(t.plane)))
     end
     if solid and t.plane ~= nil then fail("field 'plane' is for 2D models") end
     if solid and t.thickness ~= nil then fail("field 'thickness' is for 2D models") end

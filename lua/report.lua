@@ -52,7 +52,7 @@ function Result.__tostring(r)
   if r.alpha_assoc then
     local last = r.certified and not r.interrupted and not r.time_up and ", the last one its certificate" or ""
     if r.none_dilates then
-      say("  no joint has finite, non-zero friction, so none dilates: the associative answer is the")
+      say("  no joint has friction, so none dilates: the associative answer is the")
       say("  non-associative one (no sequence ran)")
     elseif r.live_scales_dead then
       say("  the live load is the weights along gravity: at every alpha the problem is the dead")
@@ -178,6 +178,10 @@ function Result.__tostring(r)
     say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
         r.lp, r.iterations, size.rows, size.columns)
   end
+  if r.flow == "associative" and r.rigid_joints then
+    say("  joints with mu = inf cannot slide, not even where they open (the associative flow's")
+    say("  limit); flow = \"nonassociative\" lets a joint that carries nothing slide open")
+  end
   if r.cone then -- 3D: alpha depends on the pyramid that stands for Coulomb's cone
     local c, bound, friction = r.cone, "", false
     for _, joint in ipairs(r.interfaces or {}) do
@@ -228,6 +232,17 @@ function Result.__tostring(r)
   return table.concat(out, "\n")
 end
 
+-- A file name that says another of the formats a result writes would hold
+-- this one: refused, naming the method that writes it.
+local WRITTEN = { png = true, svg = true, vtk = true, json = true }
+local function other_format(fmt, file)
+  local ext = (file:match("%.(%w+)$") or ""):lower()
+  if WRITTEN[ext] and ext ~= fmt then
+    error(("%s: the file name '%s' ends in .%s, but this writes %s: use r:%s(file)")
+          :format(fmt, file, ext, fmt:upper(), ext), 3)
+  end
+end
+
 local function picture(fmt)
   return function(r, file, opts)
     if type(r) ~= "table" or r._solution == nil then
@@ -236,12 +251,7 @@ local function picture(fmt)
     if type(file) ~= "string" then
       error(("%s: expects a file name, got %s"):format(fmt, type(file)), 2)
     end
-    -- a name that says another format would hold this one
-    local ext = file:match("%.(%w+)$")
-    if ext and ext:lower() ~= fmt and (ext:lower() == "png" or ext:lower() == "svg") then
-      error(("%s: the file name '%s' ends in .%s, but this writes %s: use r:%s(file)")
-            :format(fmt, file, ext, fmt:upper(), ext:lower()), 2)
-    end
+    other_format(fmt, file)
     local width, az, el
     if opts ~= nil then
       if type(opts) ~= "table" then error(fmt .. ": options must be a table { width = ... }", 2) end
@@ -278,6 +288,7 @@ Result.png = picture("png")
 function Result.vtk(r, file)
   if type(r) ~= "table" or r._solution == nil then error("vtk: call it on a result with a colon: r:vtk(file)", 2) end
   if type(file) ~= "string" then error(("vtk: expects a file name, got %s"):format(type(file)), 2) end
+  other_format("vtk", file)
   report.vtk(r._solution, file)
 end
 
@@ -287,6 +298,7 @@ end
 function Result.json(r, file)
   if type(r) ~= "table" or r._solution == nil then error("json: call it on a result with a colon: r:json(file)", 2) end
   if type(file) ~= "string" then error(("json: expects a file name, got %s"):format(type(file)), 2) end
+  other_format("json", file)
   local found, cjson = pcall(require, "cjson")
   if not found then error("json: needs Lua's cjson module (the Debian package lua-cjson): " .. tostring(cjson), 2) end
   local json = cjson.new()
@@ -365,10 +377,15 @@ local function scalar(v)
   if #first > LONG then return first:sub(1, LONG - 20) .. ("... (%d characters)"):format(#text) end
   return #first < #text and first .. " ..." or text
 end
--- The keys of t: 1..n where set, then the others, sorted if not too many
+-- The keys of t: its list 1..n (up to the first nil: an entry after a gap
+-- shows its index, so that none seems to move up), then the others,
+-- sorted if not too many
 local function keys_of(t)
-  local n, keys, rest = rawlen(t), {}, {}
-  for i = 1, n do if rawget(t, i) ~= nil then keys[#keys + 1] = i end end
+  local n, keys, rest = 0, {}, {}
+  while rawget(t, n + 1) ~= nil do
+    n = n + 1
+    keys[n] = n
+  end
   for k in next, t do
     if not (math.type(k) == "integer" and k >= 1 and k <= n) then rest[#rest + 1] = k end
   end

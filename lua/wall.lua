@@ -40,7 +40,7 @@ return function(M)
       fail(("field 'origin' must be a point %s of two finite numbers"):format(solid and "{x, z}" or "{x, y}"))
     end
     if t.base ~= nil and type(t.base) ~= "boolean" then
-      fail("field 'base' must be true or false, got " .. tostring(t.base))
+      fail("field 'base' must be true or false, got " .. report.show(t.base))
     end
     local L, H, x0, y0 = unit[1], unit[2], origin[1], origin[2]
     -- Check every entry before the first block is made.

@@ -350,6 +350,23 @@ void bl_system_speed(const bl_system *s, const double *w, const double *dt, cons
         if (s->col_kind[j] == BL_COL_TWIST) speed[s->col_point[j]] = hypot(speed[s->col_point[j]], w[j]);
 }
 
+void bl_system_rigid_motion(const bl_system *s, const double *dn, const double *speed,
+                            double *slide, double *open)
+{
+    for (int p = 0, q; p < s->npoints; p = q) {
+        int k = s->point_iface[p];
+        double fastest = 0.0, least = INFINITY;
+        for (q = p; q < s->npoints && s->point_iface[q] == k; q++) {
+            fastest = fmax(fastest, speed[q]);
+            least = fmin(least, dn[q]);
+        }
+        for (int i = p; i < q; i++) {
+            slide[i] = isinf(s->mu[i]) ? fastest : 0.0;
+            open[i] = isinf(s->mu[i]) ? least : 0.0;
+        }
+    }
+}
+
 void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, double *force)
 {
     memset(force, 0, 4 * (size_t)m->ninterfaces * sizeof *force);

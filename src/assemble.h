@@ -129,6 +129,15 @@ void bl_system_fixed_bounds(const bl_system *s, const double *n, double *lo, dou
 void bl_system_speed(const bl_system *s, const double *w, const double *dt, const double *dt3,
                      double *speed);
 
+/* The motion of every rigid joint (mu = inf in s) as a whole, from the
+ * normal motion dn and the speed (bl_system_speed) of every point: at
+ * each of its points, how fast the joint slides (its fastest point) in
+ * slide and how far it opens (its least opening point) in open; 0 at the
+ * points of other joints.  A rigid joint that slides carries nothing,
+ * and one whose every point opens no shear (doc/theory.md 6). */
+void bl_system_rigid_motion(const bl_system *s, const double *dn, const double *speed,
+                            double *slide, double *open);
+
 /* The torsion per unit normal force of a 3D interface in the resultant
  * model: its own mu_t, else mu times its torsion lever (the mean distance
  * of its area from its centroid); infinite where it cannot slide. */

@@ -132,6 +132,11 @@ static int chain(const bl_model *m)
     return 2 * m->ninterfaces <= 3 * free_blocks;
 }
 
+int bl_simplex_rescues(const bl_model *m, int nrows)
+{
+    return nrows <= BL_SIMPLEX_ROWS || (chain(m) && nrows <= BL_SIMPLEX_CHAIN_ROWS);
+}
+
 /* Where alpha = 0 has no equilibrium: the least alpha that has one (the
  * bottom of the interval whose top the solve found), or NAN.  On the
  * answer's LP of sys when given (its bounds as sys's again, its objective
@@ -234,7 +239,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
             retry = st == BL_LP_FAILED || (st == BL_LP_ITERATION_LIMIT && o->iterations == 0);
         }
         if (retry && o->lp == BL_LP_AUTO && strcmp(bl_lp_engine(lp), "ipm") == 0 &&
-            (sys->nrows <= BL_SIMPLEX_ROWS || (chain(m) && sys->nrows <= BL_SIMPLEX_CHAIN_ROWS))) {
+            bl_simplex_rescues(m, sys->nrows)) {
             /* Round-off can stop the interior point short of the answer
              * (an arch of 241 voussoirs at mu = 100 on the unweighted
              * path: the primal residual grew from 1e-12 to 1e-3 once the

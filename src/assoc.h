@@ -48,6 +48,11 @@ void bl_solve_options_default(bl_solve_options *o);
 bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi,
                    const double *obj, const bl_solve_options *o, bl_error *err);
 
+/* Whether an LP of m with nrows rows that the interior point failed is
+ * solved again by the simplex: up to BL_SIMPLEX_ROWS rows, or
+ * BL_SIMPLEX_CHAIN_ROWS on a chain of blocks (assoc.c). */
+int bl_simplex_rescues(const bl_model *m, int nrows);
+
 /* Detects interfaces when needed (which may fail: err says why), assembles,
  * solves and verifies.  Maximizing alpha finds the top of the interval of
  * alphas with an equilibrium; one more LP, alpha fixed at 0, tells whether

@@ -80,6 +80,9 @@ static void check_fields(lua_State *L, int idx, const char *fn, const char *cons
         } else if (lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 1 &&
                    lua_tointeger(L, -1) <= npos) {
             continue;
+        } else if (lua_isinteger(L, -1) && npos > 0) {
+            fail(L, "%s: unexpected entry [%lld]: the table takes %d unnamed entr%s, then named fields",
+                 fn, (long long)lua_tointeger(L, -1), npos, npos == 1 ? "y" : "ies");
         } else {
             fail(L, "%s: unexpected %s key in the table (fields are named)", fn,
                        luaL_typename(L, -1));
@@ -261,8 +264,8 @@ static bl_model *check_model(lua_State *L, int idx)
 /* A block number given by the user (1-based) -> index. */
 static int block_index(lua_State *L, bl_model *m, int idx, const char *fn, const char *what)
 {
-    int whole;
-    lua_Integer b = lua_tointegerx(L, idx, &whole); /* 2.0 counts as 2 */
+    int whole = 0; /* 2.0 counts as 2; "2" not, as no number field takes a string */
+    lua_Integer b = lua_type(L, idx) == LUA_TNUMBER ? lua_tointegerx(L, idx, &whole) : 0;
     if (!whole && lua_type(L, idx) == LUA_TNUMBER)
         fail(L, "%s: %s must be a whole block number, got %g", fn, what, lua_tonumber(L, idx));
     if (!whole) fail(L, "%s: %s must be a block number, got %s", fn, what, luaL_typename(L, idx));
@@ -728,7 +731,7 @@ static int load_3d(lua_State *L, bl_model *m)
             const double *b = bk->box3;
             double tol = 1e-9 * hypot(hypot(b[3] - b[0], b[4] - b[1]), b[5] - b[2]);
             if (!pl[k].weight && bl_polyhedron_depth(&bk->solid, pl[k].at3) < -tol)
-                fail(L, "%s: field 'at' (%g, %g, %g) is outside block %d", fn, pl[k].at3.x,
+                fail(L, "%s: field 'at' (%.9g, %.9g, %.9g) is outside block %d", fn, pl[k].at3.x,
                      pl[k].at3.y, pl[k].at3.z, pl[k].block + 1);
         }
         if (field(L, t, "force")) pl[k].force3 = to_point3(L, fn, "field 'force'");
@@ -769,6 +772,9 @@ static int model_load(lua_State *L)
     static const char *const live_choices[] = {"horizontal", "none", NULL};
     bl_model *m = check_model(L, 1);
     check_fields(L, 2, "load", fields, 0);
+    lua_pushnil(L);
+    if (!lua_next(L, 2)) return fail(L, "load: an empty table changes nothing: give dead, live, or tilt");
+    lua_pop(L, 2);
     if (m->dim == 3) return load_3d(L, m);
     int kinds[2] = {-1, -1}; /* dead, live: choice index, 2 = point load, -1 = absent */
     bl_point_load pl[2] = {{0}, {0}};
@@ -796,7 +802,7 @@ static int model_load(lua_State *L)
             if (point_field(L, t, fn, "at", &pl[k].at)) {
                 double tol = 1e-9 * hypot(bk->box[2] - bk->box[0], bk->box[3] - bk->box[1]);
                 if (!pl[k].weight && bl_polygon_depth(bk->v, bk->nv, pl[k].at) < -tol)
-                    fail(L, "%s: field 'at' (%g, %g) is outside block %d", fn, pl[k].at.x, pl[k].at.y,
+                    fail(L, "%s: field 'at' (%.9g, %.9g) is outside block %d", fn, pl[k].at.x, pl[k].at.y,
                          pl[k].block + 1);
             }
             point_field(L, t, fn, "force", &pl[k].force);
@@ -879,8 +885,8 @@ static int model_interface_info(lua_State *L)
     bl_model *m = check_model(L, 1);
     bl_error err;
     if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
-    int whole;
-    lua_Integer k = lua_tointegerx(L, 2, &whole);
+    int whole = 0;
+    lua_Integer k = lua_type(L, 2) == LUA_TNUMBER ? lua_tointegerx(L, 2, &whole) : 0;
     if (!whole)
         return fail(L, "interface_info: argument 1 must be an interface number, got %s",
                     lua_type(L, 2) == LUA_TNUMBER ? "a fraction" : luaL_typename(L, 2));
@@ -1014,6 +1020,11 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
     if (!isnan(s->alpha_min)) set_number(L, "alpha_min", s->alpha_min);
     set_string(L, "method", s->method);
     set_string(L, "flow", s->flow);
+    for (int k = 0; k < m->ninterfaces; k++)
+        if (isinf(m->interfaces[k].mu)) {
+            set_boolean(L, "rigid_joints", 1); /* some joint has mu = inf */
+            break;
+        }
     if (strcmp(s->method, "seqlp") == 0) {
         set_number(L, "alpha_assoc", s->alpha_assoc);
         set_number(L, "alpha_rigid", s->alpha_rigid);

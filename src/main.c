@@ -344,14 +344,16 @@ static void add_table_keys(lua_State *L, struct candidates *c,
                            const char *partial, int functions_only)
 {
     size_t plen = strlen(partial);
-    int want_meta = strncmp(partial, "__", 2) == 0;
+    /* names that begin with "_" (metamethods, a result's _solution, _G)
+     * only when the word does */
+    int want_hidden = partial[0] == '_';
 
     lua_pushnil(L);
     while (lua_next(L, -2)) {
         if (lua_type(L, -2) == LUA_TSTRING) {
             const char *key = lua_tostring(L, -2);
             if (strncmp(key, partial, plen) == 0 && is_identifier(key) &&
-                (want_meta || strncmp(key, "__", 2) != 0) &&
+                (want_hidden || key[0] != '_') &&
                 (!functions_only || lua_type(L, -1) == LUA_TFUNCTION))
                 add_candidate(c, prefix, prefix_len, key);
         }

@@ -30,10 +30,19 @@ void bl_seqlp_options_default(bl_seqlp_options *o)
 /* The state of one run, with everything it owns. */
 typedef struct run {
     bl_system *cone, *fixed;
+    bl_system *states; /* the cone system the stress states of start 0 and the
+                          restarts come from: the cone's, but with rigid
+                          joints at mu_rigid (search_system); or the cone
+                          itself */
+    const bl_model *model;
+    int rigid;         /* some joint is rigid (mu = inf) */
+    double mu_rigid;   /* the friction of rigid joints in this start's search */
+    bl_cone pyramid;   /* 3D: the sequence's */
     bl_lp *lp_fixed, *lp_cone;
     double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt, *dt3; /* dt3: 3D, along t3 */
     double *resist; /* 3D: per joint, the most a pyramid edge resists its motion */
     double *speed;  /* 3D: per joint, how fast it slides (and twists) */
+    double *slide, *open; /* per point of a rigid joint: bl_system_rigid_motion */
     double *n_first; /* r->n where start 0 stopped */
     double t0;             /* when the run began */
     int iterations;        /* of the random-state LPs */
@@ -77,6 +86,7 @@ static void run_free(run *r)
 {
     bl_lp_free(r->lp_fixed);
     bl_lp_free(r->lp_cone);
+    if (r->states != r->cone) bl_system_free(r->states);
     bl_system_free(r->cone);
     bl_system_free(r->fixed);
     free(r->n);
@@ -91,6 +101,8 @@ static void run_free(run *r)
     free(r->dt3);
     free(r->resist);
     free(r->speed);
+    free(r->slide);
+    free(r->open);
     free(r->obj);
     free(r->best_x);
     free(r->best_y);
@@ -104,6 +116,34 @@ static bl_system *build(const bl_model *m, const bl_cone *pyramid, bl_friction_f
 {
     if (m->dim != 3) return bl_system_build(m, form, err);
     return bl_system_build3(m, pyramid, form, err);
+}
+
+/* Whether some joint of m is rigid (mu = inf). */
+static int has_rigid(const bl_model *m)
+{
+    for (int k = 0; k < m->ninterfaces; k++)
+        if (isinf(m->interfaces[k].mu)) return 1;
+    return 0;
+}
+
+/* A system of the sequence's search: its rigid joints (mu = inf) slide at
+ * friction mu, so that a joint that carries nothing can slide open, and
+ * its stress states load a rigid joint no more than that friction allows;
+ * the certificates hold them to mu = inf (doc/theory.md 6). */
+static bl_system *search_system(const bl_model *m, const bl_cone *pyramid, bl_friction_form form,
+                                double mu, bl_error *err)
+{
+    if (!has_rigid(m)) return build(m, pyramid, form, err);
+    bl_model *c = bl_model_copy(m);
+    if (!c) {
+        bl_error_set(err, "solve: out of memory");
+        return NULL;
+    }
+    for (int k = 0; k < c->ninterfaces; k++)
+        if (isinf(c->interfaces[k].mu)) c->interfaces[k].mu = mu;
+    bl_system *s = build(c, pyramid, form, err);
+    bl_model_free(c);
+    return s;
 }
 
 bl_cone bl_seqlp_pyramid(const bl_cone *asked)
@@ -128,6 +168,7 @@ static double point_motion(run *r, const double *y)
     bl_system_point_motion(f, y, r->w, r->dn, r->dt);
     if (f->dim == 3) bl_system_tangent3(f, r->w, r->dt, r->dt3);
     bl_system_speed(f, r->w, r->dt, f->dim == 3 ? r->dt3 : NULL, r->speed);
+    bl_system_rigid_motion(r->cone, r->dn, r->speed, r->slide, r->open);
     double V = 0.0;
     for (int p = 0; p < f->npoints; p++) V = fmax(V, hypot(r->dn[p], r->speed[p]));
     return V;
@@ -219,7 +260,9 @@ static bl_lp_status certificate_lp(run *r, const bl_solve_options *asked, double
  * the cone's edge against the slip where it slides, anywhere in the cone
  * where it stays closed; cohesion at its bound against the slip where the
  * point slides (opening or not), anywhere within its bounds elsewhere:
- * the yield surface of (T3) with its tension cut-off; alpha free. */
+ * the yield surface of (T3) with its tension cut-off; a rigid joint
+ * (mu = inf) carrying nothing where it slides and no shear where it opens
+ * at every point, any shear elsewhere; alpha free. */
 static void certificate_bounds(run *r, const double *y, double slip)
 {
     const bl_system *c = r->cone;
@@ -241,7 +284,10 @@ static void certificate_bounds(run *r, const double *y, double slip)
     for (int j = 0; j < c->nforce; j++) {
         int p = c->col_point[j];
         double lo = c->lo[j], hi = c->hi[j];
-        if (r->dn[p] > eps && c->col_kind[j] != BL_COL_COHESION) {
+        if (isinf(c->mu[p])) {
+            if (r->slide[p] > eps || (c->col_kind[j] == BL_COL_NORMAL ? r->dn[p] : r->open[p]) > eps)
+                lo = hi = 0.0;
+        } else if (r->dn[p] > eps && c->col_kind[j] != BL_COL_COHESION) {
             lo = hi = 0.0; /* opening: no normal force, hence no friction */
         } else if (c->dim == 3) {
             /* 3D, sliding: friction only on the pyramid's edges (the
@@ -570,6 +616,42 @@ static int certify_ahead(const run *r, const bl_seqlp_options *o)
            bl_lp_leaves_core(b->lp, b->threads, r->cone->nrows, r->cone->ncols);
 }
 
+/* The fixed LP's bounds from the normal forces r->n: the rigid joints'
+ * shear capacities at this start's mu_rigid (r->fixed has them at
+ * BL_SEQLP_MU_RIGID). */
+static void fixed_bounds(run *r)
+{
+    const bl_system *f = r->fixed;
+    bl_system_fixed_bounds(f, r->n, r->lo, r->hi);
+    if (!r->rigid || r->mu_rigid == BL_SEQLP_MU_RIGID) return;
+    double scale = r->mu_rigid / BL_SEQLP_MU_RIGID;
+    for (int j = 0; j < f->nforce; j++)
+        if (isinf(r->cone->mu[f->col_point[j]]) &&
+            (f->col_kind[j] == BL_COL_SHEAR || f->col_kind[j] == BL_COL_TWIST)) {
+            r->lo[j] *= scale;
+            r->hi[j] *= scale;
+        }
+}
+
+/* Sets the friction of the rigid joints for the search of start k, and
+ * the system its stress states come from: start 0 at BL_SEQLP_MU_RIGID,
+ * the restarts in turn at each of BL_SEQLP_MU_RIGID_TRIED (doc/seqlp.md
+ * 16).  -1 with err set when the system cannot be made. */
+static int rigid_search(run *r, int k, bl_error *err)
+{
+    if (!r->rigid) return 0;
+    static const double tried[] = BL_SEQLP_MU_RIGID_TRIED;
+    int ntried = (int)(sizeof tried / sizeof tried[0]);
+    double mu = k == 0 ? BL_SEQLP_MU_RIGID : tried[(k - 1) % ntried];
+    if (r->states != r->cone && mu == r->mu_rigid) return 0;
+    bl_system *st = search_system(r->model, &r->pyramid, BL_FRICTION_CONE, mu, err);
+    if (!st) return -1;
+    if (r->states != r->cone) bl_system_free(r->states);
+    r->states = st;
+    r->mu_rigid = mu;
+    return 0;
+}
+
 /* What a start carries from one fixed LP to the next besides the normal
  * forces (r->n), so that a start cut at its cap can
  * go on where it stopped (bl_seqlp_solve). */
@@ -605,7 +687,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
     int j;
     for (j = ss->done; j < ss->cap; j++) {
         if (!ahead) {
-            bl_system_fixed_bounds(f, r->n, r->lo, r->hi);
+            fixed_bounds(r);
             if (!r->lp_fixed) {
                 r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
                 if (!r->lp_fixed) return -1;
@@ -617,6 +699,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
             st = bl_lp_solve(r->lp_fixed);
         }
         ahead = 0;
+        int least_now = 0; /* the least normal force tried on this LP */
         if ((st == BL_LP_ITERATION_LIMIT || st == BL_LP_FAILED) && !r->least_n &&
             strcmp(bl_lp_engine(r->lp_fixed), "ipm") == 0) {
             /* Blocks confined between supports (a wall between two
@@ -627,7 +710,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
              * optimal force fields, one with the least total normal force
              * (BL_LEAST_N): a bounded face, and for friction the
              * conservative choice (doc/seqlp.md 13). */
-            r->least_n = 1;
+            r->least_n = least_now = 1;
             bl_system_cost_normal(f, BL_LEAST_N, r->fixed->obj);
             s->lps++;
             s->iterations += bl_lp_iterations(r->lp_fixed);
@@ -636,6 +719,31 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
                                 "force\n", start_number(s), j + 1);
             bl_lp_free(r->lp_fixed);
             r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
+            if (!r->lp_fixed) return -1;
+            st = bl_lp_solve(r->lp_fixed);
+        }
+        if ((st == BL_LP_FAILED || (st == BL_LP_ITERATION_LIMIT && o->base.iterations == 0)) &&
+            o->base.lp == BL_LP_AUTO && strcmp(bl_lp_engine(r->lp_fixed), "ipm") == 0 &&
+            bl_simplex_rescues(s->model, f->nrows)) {
+            /* Round-off can stop the interior point short of the answer
+             * (an arch of 1,500 voussoirs at mu = inf): as in the
+             * associative solve, the simplex solves the LP again, and
+             * the start's other fixed LPs from its basis; with its own
+             * objective, if the least normal force did not help (its cost
+             * moved the mechanism: admissibility 1.3e-7 on that arch) */
+            if (least_now) {
+                r->least_n = 0;
+                bl_system_cost_normal(f, -BL_LEAST_N, r->fixed->obj);
+            }
+            s->lps++;
+            s->iterations += bl_lp_iterations(r->lp_fixed);
+            if (o->base.verbose)
+                fprintf(stderr, "seqlp start %d LP %d: numerical trouble, again on the simplex\n",
+                        start_number(s), j + 1);
+            bl_solve_options simplex = o->base;
+            simplex.lp = BL_LP_SIMPLEX;
+            bl_lp_free(r->lp_fixed);
+            r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &simplex, err);
             if (!r->lp_fixed) return -1;
             st = bl_lp_solve(r->lp_fixed);
         }
@@ -685,7 +793,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
                 /* the certificate on another thread, the next LP here */
                 memcpy(r->yc, y, (size_t)f->nrows * sizeof *r->yc);
                 relax(r, o, j, x, a, prev, &beta, &last, &turns);
-                bl_system_fixed_bounds(f, r->n, r->lo, r->hi);
+                fixed_bounds(r);
                 bl_lp_set_bounds(r->lp_fixed, r->lo, r->hi);
                 int two = pthread_create(&other, NULL, certify_beside, &c) == 0;
                 if (!two) certify_beside(&c);
@@ -757,16 +865,52 @@ static int state_lp(run *r, const bl_solve_options *o, bl_lp **lp, bl_lp_status 
                     bl_error *err)
 {
     bl_lp_free(*lp);
-    *lp = bl_solve_lp(r->cone, r->clo, r->chi, r->obj, o, err);
+    *lp = bl_solve_lp(r->states, r->clo, r->chi, r->obj, o, err);
     if (!*lp) return -1;
     *st = bl_lp_solve(*lp);
     r->iterations += bl_lp_iterations(*lp);
     return 0;
 }
 
+/* The normal forces of a stress state's LP (of r->states) in r->n where it
+ * is optimal; frees the LP. */
+static void state_forces(run *r, bl_lp *lp, bl_lp_status st)
+{
+    const bl_system *c = r->states;
+    if (st == BL_LP_OPTIMAL) {
+        const double *x = bl_lp_primal(lp);
+        for (int q = 0; q < c->npoints; q++) r->n[q] = 0.0;
+        for (int j = 0; j < c->nforce; j++) r->n[c->col_point[j]] += x[j] * c->col_nt[c->dim * j];
+    }
+    bl_lp_free(lp);
+}
+
+/* Start 0's normal forces where some joint is rigid: the associative
+ * answer's in r->states (rigid joints at BL_SEQLP_MU_RIGID), which loads
+ * them no more than the fixed LPs let them carry (the associative
+ * forces with mu = inf leaned on the shear of joints with no normal
+ * force: a dome's first fixed LP had no equilibrium).  r->n as it was
+ * unless that LP is optimal.  -1 with err set when it cannot be made. */
+static int search_start(run *r, const bl_seqlp_options *o, bl_solution *s, bl_error *err)
+{
+    const bl_system *c = r->states;
+    for (int j = 0; j < c->ncols; j++) {
+        r->clo[j] = c->lo[j];
+        r->chi[j] = c->hi[j];
+        r->obj[j] = c->obj[j];
+    }
+    bl_lp *lp = NULL;
+    bl_lp_status st;
+    if (state_lp(r, &o->base, &lp, &st, err)) return -1;
+    s->lps++;
+    state_forces(r, lp, st);
+    return 0;
+}
+
 /* Another admissible stress state (the seed's Eq. 22): maximize a random
- * c . x, c uniform in [0, 1), over equilibrium and the Coulomb cone with
- * alpha fixed; its normal forces seed the next start.  The seed draws these
+ * c . x, c uniform in [0, 1), over equilibrium and the Coulomb cone (of
+ * r->states) with alpha fixed; its normal forces seed the next start.
+ * The seed draws these
  * states at the current alpha; the caller draws alpha uniformly below the
  * best so far instead, because on a stack-bond wall (3 columns of 12
  * blocks, mu = 5) states at the best alpha, 0.5714, never led elsewhere,
@@ -776,7 +920,7 @@ static int state_lp(run *r, const bl_solve_options *o, bl_lp **lp, bl_lp_status 
 static int random_state(run *r, double alpha, unsigned long long *rng,
                         const bl_seqlp_options *o, bl_lp_status *status, bl_error *err)
 {
-    const bl_system *c = r->cone;
+    const bl_system *c = r->states;
     for (int j = 0; j < c->nforce; j++) {
         r->clo[j] = c->lo[j];
         r->chi[j] = c->hi[j];
@@ -806,12 +950,7 @@ static int random_state(run *r, double alpha, unsigned long long *rng,
         bl_system_cost_normal(c, 1.0, r->obj);
         if (state_lp(r, so, &lp, &st, err)) return -1;
     }
-    if (st == BL_LP_OPTIMAL) {
-        const double *x = bl_lp_primal(lp);
-        for (int q = 0; q < c->npoints; q++) r->n[q] = 0.0;
-        for (int j = 0; j < c->nforce; j++) r->n[c->col_point[j]] += x[j] * c->col_nt[c->dim * j];
-    }
-    bl_lp_free(lp);
+    state_forces(r, lp, st);
     *status = st;
     return 0;
 }
@@ -851,7 +990,7 @@ static int live_scales_dead(const bl_model *m)
 static int live_on_normals(const bl_model *m, const bl_cone *pyramid, const bl_solve_options *o,
                            bl_error *err)
 {
-    bl_system *f = build(m, pyramid, BL_FRICTION_FIXED, err);
+    bl_system *f = search_system(m, pyramid, BL_FRICTION_FIXED, BL_SEQLP_MU_RIGID, err);
     if (!f) return -1;
     double *n = calloc((size_t)f->npoints + 1, sizeof *n);
     double *lo = malloc((size_t)f->ncols * sizeof *lo), *hi = malloc((size_t)f->ncols * sizeof *hi);
@@ -1025,17 +1164,22 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     double detection = bl_clock();
     if (!m->contacts_valid && bl_contact_detect(m, err)) return -1;
     detection = bl_clock() - detection;
-    /* Only joints with finite, non-zero friction dilate: without any, the
-     * associative answer is the non-associative one, and it is solved as
-     * an associative one, on the weighted path (an arch of 600 voussoirs
-     * at mu = inf: verified in 13 iterations there, NOT verified in 52 on
-     * the unweighted one) */
-    int sliding = 0;
+    /* Only joints with friction dilate under the associative flow rule
+     * (a rigid one, mu = inf, cannot slide even where it opens): where
+     * every joint has mu = 0 the associative answer is the
+     * non-associative one, and it is solved as an associative one, on the
+     * weighted path */
+    int sliding = 0, finite = 0; /* finite: some joint's friction, where
+                                    unlimited friction is another LP */
     for (int k = 0; k < m->ninterfaces; k++) {
-        double mu = m->interfaces[k].mu;
-        sliding |= isfinite(mu) && mu > 0.0;
+        sliding |= m->interfaces[k].mu > 0.0;
+        finite |= isfinite(m->interfaces[k].mu) && m->interfaces[k].mu > 0.0;
     }
-    if (!sliding) base.weighted = weighted;
+    /* solve's default, where no joint has finite friction: the associative
+     * answer alone, its rigid joints unable to slide even where they open
+     * (doc/theory.md 6) */
+    if (o->when_sliding && !finite) sliding = 0;
+    if (!finite) base.weighted = weighted;
     path_job pj = {0};
     if (sliding && path_start(m, o, &pj, err)) return -1;
     if (pj.beside) base.dead_load = BL_DEAD_AFTER; /* the path has the other core */
@@ -1082,12 +1226,10 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         return 0;
     }
     if (!sliding && !o->when_sliding) {
-        /* The non-associative flow asked for where no joint dilates (mu
-         * infinite or zero everywhere): the associative flow rule is the
-         * non-associative one there (no slip, or slip without opening), so
-         * the associative answer, verified against it, is the answer (a
-         * sequence from it had nothing to settle: a pier at mu = inf ran
-         * 100 certificates and ended "not certified") */
+        /* The non-associative flow asked for where no joint has friction
+         * (mu = 0 everywhere): the associative flow rule is the
+         * non-associative one there (slip without opening), so the
+         * associative answer, verified against it, is the answer */
         path_free(&pj);
         s->method = "seqlp";
         s->flow = "nonassociative";
@@ -1137,6 +1279,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     s->method = "seqlp";
     s->flow = "nonassociative";
     s->alpha_assoc = locked ? INFINITY : s->alpha;
+    s->alpha_rigid = NAN; /* rigid_answer */
     s->slip = o->slip;
     s->lps = 1;
     s->certified = 0;
@@ -1147,8 +1290,13 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.t0 = t0;
     const bl_model *mc = s->model;
     r.cone = build(mc, &pyramid, BL_FRICTION_CONE, err);
-    r.fixed = r.cone ? build(mc, &pyramid, BL_FRICTION_FIXED, err) : NULL;
-    if (!r.fixed) goto fail;
+    r.fixed = r.cone ? search_system(mc, &pyramid, BL_FRICTION_FIXED, BL_SEQLP_MU_RIGID, err) : NULL;
+    r.states = r.cone;
+    r.model = mc;
+    r.rigid = has_rigid(mc);
+    r.pyramid = pyramid;
+    r.mu_rigid = BL_SEQLP_MU_RIGID;
+    if (!r.fixed || rigid_search(&r, 0, err)) goto fail;
     if (locked) {
         /* Blocks confined so that dilatancy locks them carry any
          * compression: from the first fixed LP on, the least normal force
@@ -1157,13 +1305,16 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         r.least_n = 1;
         bl_system_cost_normal(r.fixed, BL_LEAST_N, r.fixed->obj);
     }
-    int np = r.fixed->npoints, nc = r.fixed->ncols, ncc = r.cone->ncols;
+    int np = r.fixed->npoints, nc = r.fixed->ncols;
+    int ncc = r.cone->ncols > r.states->ncols ? r.cone->ncols : r.states->ncols;
     r.n = calloc((size_t)np + 1, sizeof *r.n);
     r.dn = calloc((size_t)np + 1, sizeof *r.dn);
     r.dt = calloc((size_t)np + 1, sizeof *r.dt);
     r.dt3 = calloc((size_t)np + 1, sizeof *r.dt3);
     r.resist = calloc((size_t)np + 1, sizeof *r.resist);
     r.speed = calloc((size_t)np + 1, sizeof *r.speed);
+    r.slide = calloc((size_t)np + 1, sizeof *r.slide);
+    r.open = calloc((size_t)np + 1, sizeof *r.open);
     r.n_first = malloc(((size_t)np + 1) * sizeof *r.n_first);
     r.lo = malloc((size_t)nc * sizeof *r.lo);
     r.hi = malloc((size_t)nc * sizeof *r.hi);
@@ -1176,7 +1327,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.yc = malloc((size_t)r.fixed->nrows * sizeof *r.yc);
     r.xc = malloc((size_t)ncc * sizeof *r.xc);
     if (!r.n || !r.n_first || !r.dn || !r.dt || !r.dt3 || !r.resist ||
-        !r.speed || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
+        !r.speed || !r.slide || !r.open || !r.lo || !r.hi || !r.clo || !r.chi || !r.obj || !r.w ||
         !r.best_x || !r.best_y || !r.yc || !r.xc) {
         bl_error_set(err, "solve: out of memory");
         goto fail;
@@ -1187,8 +1338,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
      * answer is itself a non-associative solution (a lower one may exist,
      * so the search goes on).  Only the restarts depend on it: where the
      * sequence's LPs leave a core idle, it runs there beside start 0
-     * (not with verbose, whose lines it would interleave). */
-    if (sliding) {
+     * (not with verbose, whose lines it would interleave).  Where every
+     * joint with friction is rigid it is the associative LP. */
+    if (finite) {
         rl.system = rigid_system(mc, &pyramid, err);
         if (!rl.system) goto fail;
         rl.lp = bl_solve_lp(rl.system, rl.system->lo, rl.system->hi, NULL, &o->base, err);
@@ -1218,8 +1370,10 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                                : s->alpha_assoc;
         int lps0 = s->lps, its0 = s->iterations + r.iterations;
         double tk = bl_clock();
+        if (rigid_search(&r, k, err)) goto fail;
         if (k == 0) {
             for (int p = 0; p < np; p++) r.n[p] = locked ? 0.0 : s->force[mc->dim * p] / r.fixed->W0;
+            if (!locked && r.states != r.cone && search_start(&r, o, s, err)) goto fail;
             if (path_answer(&pj, &r, s, err)) goto fail;
         } else {
             if (!isfinite(from)) break; /* no alpha to draw below */
@@ -1246,12 +1400,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         if (k == 0) {
             first = ss;
             if (first.done == first.cap) memcpy(r.n_first, r.n, (size_t)np * sizeof *r.n);
-            if (!sliding) {
-                s->alpha_rigid = s->alpha_assoc;
-                s->assoc_is_solution = 1;
-            } else {
-                rigid_answer(&r, &rl, s);
-            }
+            if (finite) rigid_answer(&r, &rl, s);
             /* By default (starts < 0) 10 restarts when unlimited friction
              * gives the associative alpha: start 0 then certifies the
              * associative answer, and restarts found lower ones in every
@@ -1286,6 +1435,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         first.done == first.cap) {
         memcpy(r.n, r.n_first, (size_t)np * sizeof *r.n);
         first.cap += o->max_lps;
+        if (rigid_search(&r, 0, err)) goto fail;
         if (timed_start(&r, o, s, &first, 1, s->lps, s->iterations + r.iterations, bl_clock(),
                         &stop, err) < 0)
             goto fail;
@@ -1344,6 +1494,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                     : s->stands == 0      ? BL_UNSTABLE
                                           : BL_UNCERTIFIED;
         s->has_mechanism = 0;
+        if (s->status == BL_UNCERTIFIED && !s->note[0])
+            snprintf(s->note, sizeof s->note,
+                     "no certificate passed within each start's %d fixed LPs (lps)", o->max_lps);
         /* no answer; unbounded (its first, frictionless LP: no live load
          * makes it collapse), infinite as from the associative LP */
         s->alpha = s->status == BL_UNBOUNDED ? INFINITY : NAN;

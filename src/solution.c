@@ -275,11 +275,21 @@ static bl_vec3 relative3(const bl_solution *s, int a, int b, bl_vec3 p)
     return bl_v3_sub(bl_solution_velocity(s, b, p), bl_solution_velocity(s, a, p));
 }
 
+/* Whether s is an answer of the non-associative flow, where a point that
+ * opens at all is open: the associative flow's sliding points open by mu
+ * times their slip, and only those that open by more are open. */
+static int nonassociative(const bl_solution *s)
+{
+    return s->flow && strcmp(s->flow, "nonassociative") == 0;
+}
+
 /* 3D states, from the relative velocity at every vertex of the contact
- * polygon: sliding where a vertex moves along the joint more than it
- * opens, separating where every vertex opens, rocking where some do. */
+ * polygon: sliding where a vertex moves along the joint and does not open
+ * (associative flow: by no more than mu times its slip), separating where
+ * every vertex opens, rocking where some do. */
 static void classify3(bl_solution *s)
 {
+    int nonassoc = nonassociative(s);
     const bl_model *m = s->model;
     double vmax = 0.0;
     for (int k = 0; k < m->ninterfaces; k++) {
@@ -298,7 +308,7 @@ static void classify3(bl_solution *s)
             bl_vec3 d = relative3(s, in->a, in->b, in->poly[e]);
             double dn = bl_v3_dot(d, in->n3);
             double dt = bl_v3_norm(bl_v3_sub(d, bl_v3_scale(in->n3, dn)));
-            double mu = isinf(in->mu) ? 0.0 : in->mu;
+            double mu = isinf(in->mu) || nonassoc ? 0.0 : in->mu;
             if (bl_v3_norm(d) <= eps) continue;
             if (dt > eps && dn <= mu * dt + eps) sliding++;
             else open++;
@@ -322,6 +332,7 @@ void bl_solution_classify(bl_solution *s)
         classify3(s);
         return;
     }
+    int nonassoc = nonassociative(s);
     double vmax = 0.0;
     for (int k = 0; k < m->ninterfaces; k++) {
         const bl_interface *in = &m->interfaces[k];
@@ -339,7 +350,7 @@ void bl_solution_classify(bl_solution *s)
         for (int e = 0; e < 2; e++) {
             bl_vec2 d = bl_solution_relative_velocity(s, in->a, in->b, in->p[e]);
             double dn = bl_v2_dot(d, in->normal), dt = fabs(bl_v2_dot(d, tau));
-            double mu = isinf(in->mu) ? 0.0 : in->mu;
+            double mu = isinf(in->mu) || nonassoc ? 0.0 : in->mu;
             if (bl_v2_norm(d) <= eps) {
                 closed_end = e;
             } else if (dt > eps && dn <= mu * dt + eps) {

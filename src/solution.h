@@ -124,7 +124,7 @@ typedef struct bl_solution {
     int time_up;             /* the time limit ended it, after an answer */
     int live_scales_dead;    /* the live load is the self weight along
                                 gravity: unbounded where it stands */
-    int none_dilates;        /* no joint has finite, non-zero friction:
+    int none_dilates;        /* no joint has friction (mu = 0 everywhere):
                                 the associative answer, no sequence */
     double slip;             /* the slip threshold used, relative */
     int lps;                 /* LPs solved (all kinds) */

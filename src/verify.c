@@ -148,7 +148,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     int nw = fixed->nforce > cone->nrows ? fixed->nforce : cone->nrows;
     if (cone->nforce > nw) nw = cone->nforce;
     double *w = malloc(((size_t)nw + 1) * sizeof *w);
-    double *buf = malloc((9 * (size_t)np + 1) * sizeof *buf);
+    double *buf = malloc((11 * (size_t)np + 1) * sizeof *buf);
     double *S = malloc(((size_t)cone->nrows + 1) * sizeof *S);
     if (!w || !buf || !S) {
         free(w);
@@ -164,7 +164,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
      * dissipation */
     double *dn = buf, *dt = buf + np, *n = buf + 2 * np, *t = buf + 3 * np;
     double *dt3 = buf + 4 * np, *t3 = buf + 5 * np, *speed = buf + 6 * np;
-    double *power = buf + 7 * np, *h = buf + 8 * np;
+    double *power = buf + 7 * np, *h = buf + 8 * np, *slide = buf + 9 * np, *open = buf + 10 * np;
     int d3 = cone->dim == 3, st = cone->dim;
 
     /* statics, on the cone system */
@@ -197,6 +197,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
      * cohesion column's bound times |along| (the support function of the
      * joint's yield set); the friction's power is x . along. */
     bl_system_speed(fixed, w, dt, dt3, speed);
+    bl_system_rigid_motion(cone, dn, speed, slide, open);
     double V = 0.0;
     for (int p = 0; p < np; p++) V = fmax(V, hypot(dn[p], speed[p]));
     if (V == 0.0) V = 1.0;
@@ -235,6 +236,16 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
             dissipation += R * fabs(dt[p]);
         }
         if (speed[cone->lead[p]] > slip * V && n[p] > slip * X) dil = fmax(dil, dn[p] / V);
+    }
+    /* rigid joints (mu = inf): no force where the joint slides (the flow
+     * rule's limit: its shear would do unbounded work), no shear or couple
+     * where it opens at every point (as no normal force where a point
+     * opens) */
+    for (int j = 0; j < cone->nforce; j++) {
+        int p = cone->col_point[j];
+        if (!isinf(cone->mu[p])) continue;
+        flow = fmax(flow, fabs(xc[j]) * slide[p] / (X * V));
+        if (cone->col_kind[j] == BL_COL_SHEAR) comp = fmax(comp, fabs(xc[j]) * fmax(open[p], 0.0) / (X * V));
     }
     res->equilibrium = eq;
     res->yield = fmax(yield, 0.0);

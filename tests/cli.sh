@@ -32,6 +32,9 @@ check "piped input: a table's value shows its fields (doc/guide.md, The prompt)"
   test "$(printf '%s\n' "$out" | head -1)" = '{ 1, 2.5, [true] = { 3, y = 4 }, x = "a" }'
 check "piped input: a long table a field a line, at most 20" \
   test "$(printf '%s\n' "$out" | sed -n '2p;22p;23p;24p' | tr -d ' ')" = "$(printf '{\n[20]=20,\n...(25fieldsinall)\n}')"
+out=$(printf '{ 0.3, nil, 0.9 }\nt = { 1, 2, 3, 4 }\nt[2] = nil\nt\n' | "$bin")
+check "piped input: an entry after a gap in a list shows its index (it seemed to move up)" \
+  test "$out" = "$(printf '{ 0.3, [3] = 0.9 }\n{ 1, [3] = 3, [4] = 4 }')"
 out=$(printf 'setmetatable({ 1 }, { __len = function() return 1e8 end, __pairs = function() return 42 end })\n{ s = "a\\nb", r = setmetatable({}, { __tostring = function() return "x\\ny" end }) }\n' | timeout 10 "$bin")
 check "piped input: a table is read raw, its metamethods not called" test "$(printf '%s\n' "$out" | head -1)" = '{ 1 }'
 check "piped input: a field that prints over lines shows its first" \

@@ -189,6 +189,15 @@ local bad = {
     "field 'starts' goes with flow" },
   { "arch", function() arch { n = 5, thickness = 0.1 } end, "arch", "'radius'" },
   { "arch", function() arch { n = 5, radius = 1, thickness = -0.1 } end, "arch", "'thickness'" },
+  -- a string is no number, here as in every other field ("5" read as 5,
+  -- and block "1" as block 1, while mu = "0.6" was refused)
+  { "arch", function() arch { n = "5", radius = 1, thickness = 0.2 } end, "arch", "'n'", 'got "5"' },
+  { "interface", function() interface { "1", 2, mu = 0.2 } end, "interface", "block number, got string" },
+  { "load", function() load { live = { block = "1", force = { 1, 0 } } } end, "load", "got string" },
+  -- an entry past the unnamed ones is named by its index
+  { "interface", function() interface { 1, 2, 3, mu = 0.2 } end, "interface", "unexpected entry [3]" },
+  -- an empty load{} did nothing, silently
+  { "load", function() load {} end, "load", "an empty table changes nothing" },
 }
 for i, case in ipairs(bad) do
   T.raises(case[2], ("%s rejects bad input %d"):format(case[1], i), table.unpack(case, 3))
@@ -208,6 +217,8 @@ local r0 = m:solve {}
 T.raises(function() r0.png("x.png") end, "r.png(file) with a dot", "png: call it on a result with a colon")
 T.raises(function() r0:png("x.svg") end, "r:png to a name ending in .svg", "png: the file name 'x.svg' ends in .svg",
          "use r:svg(file)")
+T.raises(function() r0:json("x.png") end, "r:json to a name ending in .png", "json: the file name 'x.png' ends in .png",
+         "use r:png(file)")
 T.raises(function() r0:svg("/nonexistent/x.svg", { view = "top" }) end, "a view of a 2D result",
          "svg: field 'view' is for 3D results")
 T.eq(m:interface { 1.0, 2.0, mu = 0.5 }, nil, "interface{ 1.0, 2.0 }: whole floats are block numbers")

@@ -481,4 +481,49 @@ do
        ("%.6g %.6g %.6g"):format(r.alpha, r3.alpha, r.alpha_assoc))
 end
 
+-- Rigid joints (mu = inf) without dilatancy: a joint that carries nothing
+-- slides open.  A pier 0.5 x 1.5 beside a wall it is not bonded to rocks
+-- away from it about its toe at alpha = b/h = 1/3; its head joint opens
+-- and slides (by 0.5 times the rotation).  The associative flow lets no
+-- rigid joint slide, even where it opens: nothing collapses.
+local function pier_by_wall(mu)
+  model { mu = mu }
+  block { vertices = { { 0, 0 }, { 0.5, 0 }, { 0.5, 1.5 }, { 0, 1.5 } } }
+  block { vertices = { { -1, -0.5 }, { 2, -0.5 }, { 2, 0 }, { -1, 0 } }, support = true }
+  block { vertices = { { -1, 0.5 }, { 0, 0.5 }, { 0, 1.5 }, { -1, 1.5 } }, support = true }
+  load { live = "horizontal" }
+end
+pier_by_wall(math.huge)
+local pw = solve { flow = "nonassociative", progress = false }
+T.ok(pw.certified and pw.verified and math.abs(pw.alpha - 1 / 3) <= 1e-9,
+     "a pier by a wall at mu = inf, without dilatancy: b/h = 1/3, certified and verified",
+     ("%s %s"):format(pw.status, tostring(pw.alpha)))
+T.eq(solve { flow = "associative" }.status, "unbounded",
+     "a pier by a wall at mu = inf, associative flow: no slip even where the head joint opens, no collapse")
+-- the same at mu = 3: the head joint opens at both ends while it slides,
+-- and is separating (it was called sliding: its opening, 0.5 to 1.5 times
+-- the rotation, is below mu times its slip)
+pier_by_wall(3)
+pw = solve { progress = false }
+local head
+for _, k in ipairs(pw.interfaces) do
+  if k.a + k.b == 4 and (k.a == 1 or k.b == 1) then head = k end
+end
+T.ok(math.abs(pw.alpha - 1 / 3) <= 1e-9 and head and head.state == "separating",
+     "a pier by a wall at mu = 3: b/h, and its head joint separating",
+     ("%s %s"):format(tostring(pw.alpha), head and head.state or "no head joint"))
+-- A column of two blocks 0.4 x 0.6 at mu = 0.6, its base joint rigid: it
+-- rocks about its toe at b/h = 0.4 / 1.2 (the certificates held the rigid
+-- joint's shear at zero where its heel opened: 1,200 failed)
+model { mu = 0.6 }
+block { vertices = { { 0, 0 }, { 0.4, 0 }, { 0.4, 0.6 }, { 0, 0.6 } } }
+block { vertices = { { 0, 0.6 }, { 0.4, 0.6 }, { 0.4, 1.2 }, { 0, 1.2 } } }
+block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+interface { 1, 3, mu = math.huge }
+load { live = "horizontal" }
+local col = solve { progress = false }
+T.ok(col.certified and col.verified and math.abs(col.alpha - 1 / 3) <= 1e-9,
+     "a column on a rigid base joint, mu = 0.6 elsewhere: b/h = 1/3, certified",
+     ("%s %s %d LPs"):format(col.status, tostring(col.alpha), col.lps))
+
 T.done()
