@@ -35,8 +35,8 @@ typedef struct run {
                           joints at mu_rigid (search_system); or the cone
                           itself */
     const bl_model *model;
-    int rigid;         /* some joint is rigid (mu = inf) */
     double mu_rigid;   /* the friction of rigid joints in this start's search */
+    double mu_cap;     /* and the most friction of the others (infinite: their own) */
     bl_cone pyramid;   /* 3D: the sequence's */
     bl_lp *lp_fixed, *lp_cone;
     double *n, *lo, *hi, *clo, *chi, *obj, *w, *dn, *dt, *dt3; /* dt3: 3D, along t3 */
@@ -118,29 +118,37 @@ static bl_system *build(const bl_model *m, const bl_cone *pyramid, bl_friction_f
     return bl_system_build3(m, pyramid, form, err);
 }
 
-/* Whether some joint of m is rigid (mu = inf). */
-static int has_rigid(const bl_model *m)
+/* The friction a joint of friction mu has in a search whose rigid joints
+ * slide at mu_rigid and whose others have at most mu_cap. */
+static double search_mu(double mu, double mu_rigid, double mu_cap)
+{
+    return isinf(mu) ? mu_rigid : fmin(mu, mu_cap);
+}
+
+/* Whether the search at (mu_rigid, mu_cap) changes some joint's friction. */
+static int search_differs(const bl_model *m, double mu_rigid, double mu_cap)
 {
     for (int k = 0; k < m->ninterfaces; k++)
-        if (isinf(m->interfaces[k].mu)) return 1;
+        if (search_mu(m->interfaces[k].mu, mu_rigid, mu_cap) != m->interfaces[k].mu) return 1;
     return 0;
 }
 
 /* A system of the sequence's search: its rigid joints (mu = inf) slide at
- * friction mu, so that a joint that carries nothing can slide open, and
- * its stress states load a rigid joint no more than that friction allows;
- * the certificates hold them to mu = inf (doc/theory.md 6). */
+ * friction mu_rigid, so that a joint that carries nothing can slide open,
+ * and the others at most at mu_cap; its stress states load a joint no more
+ * than that friction allows.  The certificates hold every joint to its
+ * own friction (doc/theory.md 6). */
 static bl_system *search_system(const bl_model *m, const bl_cone *pyramid, bl_friction_form form,
-                                double mu, bl_error *err)
+                                double mu_rigid, double mu_cap, bl_error *err)
 {
-    if (!has_rigid(m)) return build(m, pyramid, form, err);
+    if (!search_differs(m, mu_rigid, mu_cap)) return build(m, pyramid, form, err);
     bl_model *c = bl_model_copy(m);
     if (!c) {
         bl_error_set(err, "solve: out of memory");
         return NULL;
     }
     for (int k = 0; k < c->ninterfaces; k++)
-        if (isinf(c->interfaces[k].mu)) c->interfaces[k].mu = mu;
+        c->interfaces[k].mu = search_mu(c->interfaces[k].mu, mu_rigid, mu_cap);
     bl_system *s = build(c, pyramid, form, err);
     bl_model_free(c);
     return s;
@@ -616,39 +624,48 @@ static int certify_ahead(const run *r, const bl_seqlp_options *o)
            bl_lp_leaves_core(b->lp, b->threads, r->cone->nrows, r->cone->ncols);
 }
 
-/* The fixed LP's bounds from the normal forces r->n: the rigid joints'
- * shear capacities at this start's mu_rigid (r->fixed has them at
- * BL_SEQLP_MU_RIGID). */
+/* The fixed LP's bounds from the normal forces r->n, at this start's
+ * friction (r->fixed has every joint's own, and rigid ones'
+ * BL_SEQLP_MU_RIGID): R = mu N + C scaled in its friction part. */
 static void fixed_bounds(run *r)
 {
     const bl_system *f = r->fixed;
     bl_system_fixed_bounds(f, r->n, r->lo, r->hi);
-    if (!r->rigid || r->mu_rigid == BL_SEQLP_MU_RIGID) return;
-    double scale = r->mu_rigid / BL_SEQLP_MU_RIGID;
-    for (int j = 0; j < f->nforce; j++)
-        if (isinf(r->cone->mu[f->col_point[j]]) &&
-            (f->col_kind[j] == BL_COL_SHEAR || f->col_kind[j] == BL_COL_TWIST)) {
-            r->lo[j] *= scale;
-            r->hi[j] *= scale;
-        }
+    for (int j = 0; j < f->nforce; j++) {
+        int p = f->col_point[j];
+        if ((f->col_kind[j] != BL_COL_SHEAR && f->col_kind[j] != BL_COL_TWIST) || !(f->mu[p] > 0.0) ||
+            !isfinite(r->hi[j]))
+            continue;
+        double mu = search_mu(r->cone->mu[p], r->mu_rigid, r->mu_cap);
+        if (mu == f->mu[p]) continue;
+        double C = f->cohesion[p], R = (r->hi[j] - C) * (mu / f->mu[p]) + C;
+        r->lo[j] = -R;
+        r->hi[j] = R;
+    }
 }
 
-/* Sets the friction of the rigid joints for the search of start k, and
- * the system its stress states come from: start 0 at BL_SEQLP_MU_RIGID,
- * the restarts in turn at each of BL_SEQLP_MU_RIGID_TRIED (doc/seqlp.md
+/* Sets the friction of the search of start k, and the system its stress
+ * states come from: start 0 with every joint's own friction (rigid ones
+ * at BL_SEQLP_MU_RIGID); the restarts in turn at each of
+ * BL_SEQLP_MU_TRIED, rigid joints at it and others at most at it: a low
+ * friction lets the search find mechanisms that open as they slide, which
+ * high friction hides (W1 at mu = 20: 1.861 instead of 0.686; doc/seqlp.md
  * 16).  -1 with err set when the system cannot be made. */
-static int rigid_search(run *r, int k, bl_error *err)
+static int search_friction(run *r, int k, bl_error *err)
 {
-    if (!r->rigid) return 0;
-    static const double tried[] = BL_SEQLP_MU_RIGID_TRIED;
+    static const double tried[] = BL_SEQLP_MU_TRIED;
     int ntried = (int)(sizeof tried / sizeof tried[0]);
-    double mu = k == 0 ? BL_SEQLP_MU_RIGID : tried[(k - 1) % ntried];
-    if (r->states != r->cone && mu == r->mu_rigid) return 0;
-    bl_system *st = search_system(r->model, &r->pyramid, BL_FRICTION_CONE, mu, err);
+    double rigid = k == 0 ? BL_SEQLP_MU_RIGID : tried[(k - 1) % ntried];
+    double cap = k == 0 ? INFINITY : rigid;
+    if (rigid == r->mu_rigid && cap == r->mu_cap) return 0;
+    r->mu_rigid = rigid;
+    r->mu_cap = cap;
+    bl_system *st = search_differs(r->model, rigid, cap)
+                        ? search_system(r->model, &r->pyramid, BL_FRICTION_CONE, rigid, cap, err)
+                        : r->cone;
     if (!st) return -1;
     if (r->states != r->cone) bl_system_free(r->states);
     r->states = st;
-    r->mu_rigid = mu;
     return 0;
 }
 
@@ -990,7 +1007,7 @@ static int live_scales_dead(const bl_model *m)
 static int live_on_normals(const bl_model *m, const bl_cone *pyramid, const bl_solve_options *o,
                            bl_error *err)
 {
-    bl_system *f = search_system(m, pyramid, BL_FRICTION_FIXED, BL_SEQLP_MU_RIGID, err);
+    bl_system *f = search_system(m, pyramid, BL_FRICTION_FIXED, BL_SEQLP_MU_RIGID, INFINITY, err);
     if (!f) return -1;
     double *n = calloc((size_t)f->npoints + 1, sizeof *n);
     double *lo = malloc((size_t)f->ncols * sizeof *lo), *hi = malloc((size_t)f->ncols * sizeof *hi);
@@ -1290,13 +1307,13 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     r.t0 = t0;
     const bl_model *mc = s->model;
     r.cone = build(mc, &pyramid, BL_FRICTION_CONE, err);
-    r.fixed = r.cone ? search_system(mc, &pyramid, BL_FRICTION_FIXED, BL_SEQLP_MU_RIGID, err) : NULL;
+    r.fixed = r.cone ? search_system(mc, &pyramid, BL_FRICTION_FIXED, BL_SEQLP_MU_RIGID, INFINITY, err)
+                     : NULL;
     r.states = r.cone;
     r.model = mc;
-    r.rigid = has_rigid(mc);
     r.pyramid = pyramid;
-    r.mu_rigid = BL_SEQLP_MU_RIGID;
-    if (!r.fixed || rigid_search(&r, 0, err)) goto fail;
+    r.mu_rigid = NAN; /* search_friction sets them */
+    if (!r.fixed || search_friction(&r, 0, err)) goto fail;
     if (locked) {
         /* Blocks confined so that dilatancy locks them carry any
          * compression: from the first fixed LP on, the least normal force
@@ -1370,7 +1387,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                                : s->alpha_assoc;
         int lps0 = s->lps, its0 = s->iterations + r.iterations;
         double tk = bl_clock();
-        if (rigid_search(&r, k, err)) goto fail;
+        if (search_friction(&r, k, err)) goto fail;
         if (k == 0) {
             for (int p = 0; p < np; p++) r.n[p] = locked ? 0.0 : s->force[mc->dim * p] / r.fixed->W0;
             if (!locked && r.states != r.cone && search_start(&r, o, s, err)) goto fail;
@@ -1435,7 +1452,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         first.done == first.cap) {
         memcpy(r.n, r.n_first, (size_t)np * sizeof *r.n);
         first.cap += o->max_lps;
-        if (rigid_search(&r, 0, err)) goto fail;
+        if (search_friction(&r, 0, err)) goto fail;
         if (timed_start(&r, o, s, &first, 1, s->lps, s->iterations + r.iterations, bl_clock(),
                         &stop, err) < 0)
             goto fail;

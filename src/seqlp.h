@@ -75,7 +75,10 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * bonded to: associative alpha infinite, 1/3 without dilatancy;
  * doc/seqlp.md 16). */
 #define BL_SEQLP_MU_RIGID 100.0
-#define BL_SEQLP_MU_RIGID_TRIED {3.0, 10.0, 30.0, 100.0}
+
+/* The restarts' friction in turn (seqlp.c, search_friction): rigid joints
+ * at it, the others at most at it (doc/seqlp.md 16). */
+#define BL_SEQLP_MU_TRIED {3.0, 10.0, 30.0, 100.0}
 #define BL_SEQLP_SEARCH_COLUMNS3 1000
 #define BL_SEQLP_RETRY_ROWS 10000
 

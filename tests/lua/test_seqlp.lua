@@ -526,4 +526,18 @@ T.ok(col.certified and col.verified and math.abs(col.alpha - 1 / 3) <= 1e-9,
      "a column on a rigid base joint, mu = 0.6 elsewhere: b/h = 1/3, certified",
      ("%s %s %d LPs"):format(col.status, tostring(col.alpha), col.lps))
 
+-- High friction: the corner of W1 above a stepped crack (blocks right of
+-- x = 1.8, 1.6, 1.4, 1.2 in courses 3 to 6) overturning about (2, 0.35)
+-- needs by virtual work alpha = sum w (2 - x) / sum w (y - 0.35) = 0.6 /
+-- 0.875 = 24/35 (widths 0.2, 0.4, 0.6, 0.8 at centroids x = 1.9 ... 1.6,
+-- y = 0.4375 ... 0.9625), a solution at every mu above its hinge's T/N.
+-- At mu = 1000 the restarts' search at lower friction finds it (at the
+-- joints' own friction the search certified 1.615).
+model { mu = 1000 }
+wall { courses = walls.W1, unit = { 0.4, 0.175 } }
+load { live = "horizontal" }
+local hi = solve { progress = false }
+T.ok(hi.certified and hi.verified and hi.alpha <= 24 / 35 + 1e-9,
+     "W1 at mu = 1000: at most the corner's 24/35, certified", ("%s %.9f"):format(hi.status, hi.alpha))
+
 T.done()
