@@ -1261,6 +1261,17 @@ static int model_solve(lua_State *L)
     if (method != MPEC && (field_given(L, 2, "start") || field_given(L, 2, "penalty") ||
                            field_given(L, 2, "complementarity")))
         fail(L, "solve: fields 'start', 'penalty' and 'complementarity' go with method = \"mpec\"");
+    if (method == MPEC && !field_given(L, 2, "flow")) {
+        /* as solve{}'s own default: the associative flow where no joint
+         * has finite friction (its rigid joints, as the direct solve's,
+         * cannot slide even where they open: doc/theory.md 6) */
+        bl_error err;
+        if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
+        int finite = 0;
+        for (int k = 0; k < m->ninterfaces; k++)
+            finite |= isfinite(m->interfaces[k].mu) && m->interfaces[k].mu > 0.0;
+        if (!finite) flow = 0;
+    }
     bl_mpec_options mo;
     bl_mpec_options_default(&mo);
     mo.nonassociative = flow;

@@ -559,4 +559,25 @@ do
   T.eq(solve {}.participation, nil, "a live point load beside the weights': no participation")
 end
 
+-- A pier 0.5 x 1.5 pressed by a dead load F of 1e10 and 3e11 times its
+-- weight W at the middle of its top: it overturns at (W + F) (b/2) /
+-- (W h/2) = (W + F) / (3 W), below sliding's 0.6 (W + F) / W; exact and
+-- verified (its equilibrium, balanced to 6e-6 W0 among terms of 1e10 W0,
+-- was NOT verified: residuals are now measured against at least 1e-8 of
+-- the block's largest term), with either flow (relative tolerance 1e-9)
+for _, ratio in ipairs { 1e10, 3e11 } do
+  for _, flow in ipairs { "associative", "nonassociative" } do
+    model { mu = 0.6 }
+    local p = block { vertices = { { 0, 0 }, { 0.5, 0 }, { 0.5, 1.5 }, { 0, 1.5 } } }
+    block { vertices = { { -1, -0.5 }, { 2, -0.5 }, { 2, 0 }, { -1, 0 } }, support = true }
+    local W = current():block_info(p).weight
+    load { live = "horizontal", dead = { block = p, at = { 0.25, 1.5 }, force = { 0, -ratio * W } } }
+    local r = solve { flow = flow, progress = false }
+    local want = (W + ratio * W) / (3 * W)
+    T.ok(r.verified and math.abs(r.alpha - want) <= 1e-9 * want,
+         ("a pier pressed by %g times its weight, %s flow: (W + F) / 3W, verified"):format(ratio, flow),
+         ("%s %.17g %.17g"):format(tostring(r.verified), r.alpha, want))
+  end
+end
+
 T.done()
