@@ -65,22 +65,22 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * 2,049: 140 s against 12 s). */
 #define BL_SEQLP_SEARCH 10
 #define BL_SEQLP_SEARCH_ROWS 300
+#define BL_SEQLP_SEARCH_COLUMNS3 1000
+#define BL_SEQLP_RETRY_ROWS 10000
 
-/* The friction at which a rigid joint (mu = inf) slides in the sequence's
- * fixed LPs (not in its certificates, which hold it rigid unless it
- * carries nothing): an infinite one would never let a joint that the
- * previous LP left without normal force slide open, and the sequence
- * could not leave the associative answer, whose flow rule forbids any
- * slip even where a rigid joint opens (a pier beside a wall it is not
- * bonded to: associative alpha infinite, 1/3 without dilatancy;
- * doc/seqlp.md 16). */
+/* The friction at which a rigid joint (mu = inf) slides in start 0's
+ * search, its fixed LPs and stress states (not in the certificates, which
+ * hold it rigid unless it carries nothing): an infinite one would never
+ * let a joint that the previous LP left without normal force slide open,
+ * and the sequence could not leave the associative answer, whose flow
+ * rule forbids any slip even where a rigid joint opens (a pier beside a
+ * wall it is not bonded to: associative alpha infinite, 1/3 without
+ * dilatancy; doc/seqlp.md 16). */
 #define BL_SEQLP_MU_RIGID 100.0
 
 /* The restarts' friction in turn (seqlp.c, search_friction): rigid joints
  * at it, the others at most at it (doc/seqlp.md 16). */
 #define BL_SEQLP_MU_TRIED {3.0, 10.0, 30.0, 100.0}
-#define BL_SEQLP_SEARCH_COLUMNS3 1000
-#define BL_SEQLP_RETRY_ROWS 10000
 
 /* A start whose certificates keep failing while alpha has settled is
  * caught in a slow mode of the relaxation (the 10,050-block wall: the
