@@ -1267,10 +1267,7 @@ static int model_solve(lua_State *L)
          * cannot slide even where they open: doc/theory.md 6) */
         bl_error err;
         if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
-        int finite = 0;
-        for (int k = 0; k < m->ninterfaces; k++)
-            finite |= isfinite(m->interfaces[k].mu) && m->interfaces[k].mu > 0.0;
-        if (!finite) flow = 0;
+        if (!bl_model_finite_friction(m)) flow = 0;
     }
     bl_mpec_options mo;
     bl_mpec_options_default(&mo);

@@ -323,6 +323,13 @@ double bl_model_size(const bl_model *m)
     return hypot(box[2] - box[0], box[3] - box[1]);
 }
 
+int bl_model_finite_friction(const bl_model *m)
+{
+    for (int k = 0; k < m->ninterfaces; k++)
+        if (isfinite(m->interfaces[k].mu) && m->interfaces[k].mu > 0.0) return 1;
+    return 0;
+}
+
 bl_vec2 bl_model_gravity(const bl_model *m)
 {
     double c = cos(m->tilt), s = sin(m->tilt);

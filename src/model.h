@@ -188,6 +188,11 @@ double bl_model_size(const bl_model *m);
 /* Current direction of the dead load (gravity turned by tilt). */
 bl_vec2 bl_model_gravity(const bl_model *m);
 bl_vec3 bl_model_gravity3(const bl_model *m);
+
+/* Whether some detected interface has finite, non-zero friction: where
+ * none has, solve{}'s default flow is the associative one (doc/theory.md
+ * 6, "Rigid joints"). */
+int bl_model_finite_friction(const bl_model *m);
 int bl_model_free_blocks(const bl_model *m);
 /* Whether a 3D model's interfaces take the resultant model: all by
  * default (1, with *a = *b = -1), or those between blocks *a and *b by

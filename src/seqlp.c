@@ -1197,12 +1197,9 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
      * every joint has mu = 0 the associative answer is the
      * non-associative one, and it is solved as an associative one, on the
      * weighted path */
-    int sliding = 0, finite = 0; /* finite: some joint's friction, where
+    int sliding = 0, finite = bl_model_finite_friction(m); /* finite: where
                                     unlimited friction is another LP */
-    for (int k = 0; k < m->ninterfaces; k++) {
-        sliding |= m->interfaces[k].mu > 0.0;
-        finite |= isfinite(m->interfaces[k].mu) && m->interfaces[k].mu > 0.0;
-    }
+    for (int k = 0; k < m->ninterfaces; k++) sliding |= m->interfaces[k].mu > 0.0;
     /* solve's default, where no joint has finite friction: the associative
      * answer alone, its rigid joints unable to slide even where they open
      * (doc/theory.md 6) */
