@@ -108,6 +108,7 @@ return function(M, fields)
   local function lintels_field(fn, t, openings, lo, hi, courses)
     local b = t.lintel
     if b == nil then return {} end
+    if #openings == 0 then fail(fn, "field 'lintel' is given, but there are no openings for lintels to span") end
     if type(b) ~= "number" or not (b >= 0 and b < math.huge) then
       fail(fn, ("field 'lintel' must be the lintels' bearing on each side, a number >= 0 in units of L, got %s")
         :format(report.show(b)))
@@ -334,9 +335,15 @@ return function(M, fields)
       for _, p in ipairs(stones) do pieces[#pieces + 1] = { p[1], p[2], 0, k } end
       return pieces
     end
+    local laid, any = {}, false
+    for c = 1, courses do
+      laid[c] = course(c)
+      any = any or #laid[c] > 0
+    end
+    if not any then fail("bond", "field 'openings' leave no brick of the wall") end
     local blocks = {}
     for c = 1, courses do
-      for _, p in ipairs(course(c)) do
+      for _, p in ipairs(laid[c]) do
         blocks[#blocks + 1] = box { size = { (p[2] - p[1]) * L, (p[4] - p[3]) * L, H },
                                       at = { (p[1] + p[2]) / 2 * L, (p[3] + p[4]) / 2 * L, (c - 1) * H },
                                       density = t.density }

@@ -14,7 +14,7 @@ local plural = report.plural
 report.Result = Result
 
 Result.__index = Result
-local Interface, Velocity = {}, {}
+local Interface = {}
 
 local function g(x)
   return ("%.3g"):format(x)
@@ -96,10 +96,15 @@ function Result.__tostring(r)
     if near > 0 then
       say("  %d certificates tried; the nearest forces after %d that failed", tried, near)
     end
-    if r.alpha_settled and math.abs(r.alpha_settled - r.alpha) > 1e-9 * math.abs(r.alpha) then
+    if r.alpha_settled and r.alpha_settled - r.alpha > 1e-9 * math.abs(r.alpha) then
       say("  the sequence settled at %.6g; its mechanism is a solution from %.6g, the lowest alpha",
           r.alpha_settled, r.alpha)
       say("  at which forces fit it")
+    elseif r.alpha_settled and r.alpha - r.alpha_settled > 1e-9 * math.abs(r.alpha) then
+      -- (forces fitting the mechanism at the settled alpha leaned on
+      -- motions taken as none, and failed the checks: doc/seqlp.md 12)
+      say("  the sequence settled at %.6g; forces that fit its mechanism pass the checks from %.6g",
+          r.alpha_settled, r.alpha)
     end
     local certified, went_on = 0, nil
     for _, st in ipairs(r.starts) do
@@ -328,12 +333,19 @@ function Interface.__tostring(k)
   if k.hinge then s = s .. (", hinge at (%.4g, %.4g)"):format(k.hinge[1], k.hinge[2]) end
   return s
 end
-function Velocity.__tostring(u)
-  if #u == 6 then -- (+ 0.0 turns -0 into 0)
-    return ("v = (%.4g, %.4g, %.4g), omega = (%.4g, %.4g, %.4g)"):format(u[1] + 0.0, u[2] + 0.0,
-      u[3] + 0.0, u[4] + 0.0, u[5] + 0.0, u[6] + 0.0)
+-- A block's velocity printed with components below NOISE of the largest
+-- of their kind in the mechanism (translation, rotation) as 0: the
+-- interior point leaves still blocks moving at 1e-10 of the mechanism.
+local NOISE = 1e-9
+local function velocity_text(u, vmax, wmax)
+  local function c(i, max) -- (+ 0.0 turns -0 into 0)
+    return math.abs(u[i]) < NOISE * max and 0.0 or u[i] + 0.0
   end
-  return ("vx = %.4g, vy = %.4g, omega = %.4g"):format(u[1] + 0.0, u[2] + 0.0, u[3] + 0.0)
+  if #u == 6 then
+    return ("v = (%.4g, %.4g, %.4g), omega = (%.4g, %.4g, %.4g)"):format(c(1, vmax), c(2, vmax), c(3, vmax),
+      c(4, wmax), c(5, wmax), c(6, wmax))
+  end
+  return ("vx = %.4g, vy = %.4g, omega = %.4g"):format(c(1, vmax), c(2, vmax), c(3, wmax))
 end
 
 -- Lists of block numbers made by a generator print as ranges.
@@ -461,7 +473,15 @@ end
 function report.wrap(r)
   if r.dead then report.wrap(r.dead) end
   for _, k in ipairs(r.interfaces or {}) do setmetatable(k, Interface) end
-  for _, u in ipairs(r.mechanism or {}) do setmetatable(u, Velocity) end
+  local vmax, wmax = 0.0, 0.0
+  for _, u in ipairs(r.mechanism or {}) do
+    local nv = #u == 6 and 3 or 2
+    for i = 1, #u do
+      if i <= nv then vmax = math.max(vmax, math.abs(u[i])) else wmax = math.max(wmax, math.abs(u[i])) end
+    end
+  end
+  local shown = { __tostring = function(u) return velocity_text(u, vmax, wmax) end }
+  for _, u in ipairs(r.mechanism or {}) do setmetatable(u, shown) end
   return setmetatable(r, Result)
 end
 

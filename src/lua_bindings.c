@@ -605,9 +605,14 @@ static int model_interface(lua_State *L)
         int r = bl_polygon3_check(s.p3, n, tol, &nrm, &area);
         if (r == -1) return fail(L, "interface: field 'points' encloses no area (on a line?)");
         if (r == -2) return fail(L, "interface: field 'points' is not a convex polygon in order");
-        if (r == -3)
-            return fail(L, "interface: field 'points' do not lie in one plane (within tol = %.3g)",
-                        tol);
+        if (r == -3) { /* no one corner to blame: say how far the last is */
+            bl_vec3 u = bl_v3_sub(s.p3[1], s.p3[0]), v = bl_v3_sub(s.p3[2], s.p3[0]);
+            bl_vec3 w = bl_v3_cross(u, v);
+            double off = fabs(bl_v3_dot(bl_v3_sub(s.p3[n - 1], s.p3[0]), w)) / bl_v3_norm(w);
+            return fail(L, "interface: field 'points' do not lie in one plane: the plane through "
+                           "points 1, 2 and 3 misses point %d by %.3g (tol = %.3g)",
+                        n, off, tol);
+        }
         if (r < 0)
             return fail(L, "interface: field 'points' point %d lies off the polygon's plane "
                            "(by more than tol = %.3g)", -r - 3, tol);

@@ -282,12 +282,16 @@ static void add_candidate(struct candidates *c, const char *prefix,
     c->items[c->n++] = item;
 }
 
+static int is_identifier_start(char c)
+{
+    return c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
 static int is_identifier(const char *s)
 {
     const char *p;
 
-    if (!(s[0] == '_' || (s[0] >= 'a' && s[0] <= 'z') ||
-          (s[0] >= 'A' && s[0] <= 'Z')))
+    if (!is_identifier_start(s[0]))
         return 0;
     for (p = s + 1; *p; p++)
         if (!(*p == '_' || (*p >= 'a' && *p <= 'z') ||
@@ -313,16 +317,20 @@ static int step_index_chain(lua_State *L)
     return 0;
 }
 
-/* Replaces the value on top with its field name, found without running any
- * code (completion must not call __index functions): a raw get if it is a
- * table, then along its chain of __index tables.  nil when not found. */
-static void peek_field(lua_State *L, const char *name, size_t len)
+/* Replaces the value on top with its field name (or, name NULL, its
+ * entry index), found without running any code (completion must not call
+ * __index functions): a raw get if it is a table, then along its chain of
+ * __index tables.  nil when not found. */
+static void peek_field(lua_State *L, const char *name, size_t len, lua_Integer index)
 {
     int depth;
 
     for (depth = 0; depth < MAX_INDEX_DEPTH; depth++) {
         if (lua_type(L, -1) == LUA_TTABLE) {
-            lua_pushlstring(L, name, len);
+            if (name != NULL)
+                lua_pushlstring(L, name, len);
+            else
+                lua_pushinteger(L, index);
             if (lua_rawget(L, -2) != LUA_TNIL) {
                 lua_remove(L, -2);
                 return;
@@ -335,6 +343,23 @@ static void peek_field(lua_State *L, const char *name, size_t len)
     if (depth == MAX_INDEX_DEPTH)
         lua_pop(L, 1);
     lua_pushnil(L);
+}
+
+/* Steps the value on top through one "[k]" at *p, k an integer literal,
+ * advancing *p past it; 0 when *p holds anything else (a variable, an
+ * expression, a string: quotes break readline's words). */
+static int peek_bracket(lua_State *L, const char **p)
+{
+    const char *q = *p + 1, *end;
+    lua_Integer k = 0;
+
+    for (end = q; *end >= '0' && *end <= '9' && end - q < 15; end++)
+        k = 10 * k + (*end - '0');
+    if (end == q || *end != ']')
+        return 0;
+    peek_field(L, NULL, 0, k);
+    *p = end + 1;
+    return 1;
 }
 
 /* Adds the string keys of the table on top that extend partial.  Names
@@ -361,38 +386,57 @@ static void add_table_keys(lua_State *L, struct candidates *c,
     }
 }
 
-/* Protected part of completion.  The word is split at its last '.' or ':';
- * the part before is walked from the globals, the part after is matched
- * against the fields of the value reached and of its __index tables. */
+/* Protected part of completion.  The word begins after the last '[' left
+ * open (t[na completes a global); it is split at its last '.' or ':'
+ * outside brackets; the part before is walked from the globals through
+ * names and literal indices (r.interfaces[3].st), the part after is
+ * matched against the fields of the value reached and of its __index
+ * tables. */
 static int collect_completions(lua_State *L)
 {
     const struct completion *comp = lua_touserdata(L, 1);
     const char *text = comp->text;
-    const char *sep = NULL, *p, *partial;
-    int depth, i;
+    const char *word = text, *sep = NULL, *p, *partial;
+    const char *opened[16];   /* the '['s not closed yet */
+    int depth, i, open = 0;
 
-    for (p = text; *p; p++)
-        if (*p == '.' || *p == ':')
+    for (p = text; *p; p++) {
+        if (*p == '[' && open < 16)
+            opened[open++] = p;
+        else if (*p == ']' && open > 0)
+            open--;
+    }
+    if (open > 0)
+        word = opened[open - 1] + 1;
+    for (p = word, depth = 0; *p; p++) {
+        depth += *p == '[' ? 1 : *p == ']' ? -1 : 0;
+        if (depth == 0 && (*p == '.' || *p == ':'))
             sep = p;
-    if (sep == text)   /* after a call, "current():", the value is unknown */
-        return 0;
+    }
     lua_pushglobaltable(L);
     if (sep == NULL) {
-        partial = text;
+        partial = word;
         for (i = 0; lua_keywords[i] != NULL; i++)
-            if (strncmp(lua_keywords[i], text, strlen(text)) == 0)
-                add_candidate(comp->out, "", 0, lua_keywords[i]);
+            if (strncmp(lua_keywords[i], word, strlen(word)) == 0)
+                add_candidate(comp->out, text, (size_t)(word - text), lua_keywords[i]);
     } else {
-        for (p = text; p < sep; p++) {
-            const char *end = p;
-            while (end < sep && *end != '.' && *end != ':')
-                end++;
-            if (*end == ':' && end != sep)   /* "a:b.c" is not an access */
-                return 0;
-            peek_field(L, p, (size_t)(end - p));
+        if (!is_identifier_start(*word))   /* after a call, "current():", the value is unknown */
+            return 0;
+        for (p = word; p < sep;) {
+            if (*p == '[') {
+                if (!peek_bracket(L, &p))
+                    return 0;
+            } else {
+                if (p != word && *p++ == ':')   /* "a:b.c" is not an access */
+                    return 0;
+                const char *end = p;
+                while (end < sep && *end != '.' && *end != ':' && *end != '[')
+                    end++;
+                peek_field(L, p, (size_t)(end - p), 0);
+                p = end;
+            }
             if (lua_isnil(L, -1))
                 return 0;
-            p = end;
         }
         partial = sep + 1;
     }
@@ -639,8 +683,9 @@ static void print_banner(lua_State *L)
 static void setup_readline(void)
 {
     rl_readline_name = "blocklim";
-    /* '.' and ':' are not breaks, so "string.fo" is one word to complete. */
-    rl_basic_word_break_characters = " \t\n\"'`\\<>=;+-*/%^~#&|,()[]{}";
+    /* '.', ':', '[' and ']' are not breaks, so "string.fo" and "r.interfaces[3].st"
+     * are one word to complete. */
+    rl_basic_word_break_characters = " \t\n\"'`\\<>=;+-*/%^~#&|,(){}";
     rl_attempted_completion_function = complete;
     rl_getc_function = read_key;
     history_open();

@@ -322,7 +322,7 @@ int bl_polyhedron_check(bl_polyhedron *p, double tol, int id, bl_error *err)
             if (fabs(d) > tol)
                 return bl_error_set(err,
                                     "block %d: face %d is not planar (vertex %d is %.3g off its "
-                                    "plane; tolerance %.3g)",
+                                    "mean plane; tolerance %.3g)",
                                     id, k + 1, p->fi[a + i] + 1, fabs(d), tol);
         }
         /* simple: in its plane no two edges cross (a crossed face has no

@@ -155,8 +155,16 @@ static bl_system *search_system(const bl_model *m, const bl_cone *pyramid, bl_fr
         bl_error_set(err, "solve: out of memory");
         return NULL;
     }
-    for (int k = 0; k < c->ninterfaces; k++)
-        c->interfaces[k].mu = search_mu(c->interfaces[k].mu, mu_rigid, mu_cap);
+    for (int k = 0; k < c->ninterfaces; k++) {
+        bl_interface *in = &c->interfaces[k];
+        double mu = search_mu(in->mu, mu_rigid, mu_cap);
+        /* a torsion coefficient of the joint's own (3D resultant model)
+         * scales with its friction, as fixed_bounds scales its column's
+         * capacity from the fixed system's friction */
+        double from = isinf(in->mu) ? BL_SEQLP_MU_RIGID : in->mu;
+        if (in->mu_t > 0.0 && from > 0.0) in->mu_t *= mu / from;
+        in->mu = mu;
+    }
     bl_system *s = build(c, pyramid, form, err);
     bl_model_free(c);
     return s;
@@ -910,9 +918,10 @@ static void state_forces(run *r, bl_lp *lp, bl_lp_status st)
     bl_lp_free(lp);
 }
 
-/* Start 0's normal forces where some joint is rigid: the associative
- * answer's in r->states (rigid joints at BL_SEQLP_MU_RIGID), which loads
- * them no more than the fixed LPs let them carry (the associative
+/* Start 0's normal forces where some joint is rigid, and a retry's: the
+ * associative answer's in r->states (rigid joints at the search's
+ * friction), which loads them no more than the fixed LPs let them carry
+ * (the associative
  * forces with mu = inf leaned on the shear of joints with no normal
  * force: a dome's first fixed LP had no equilibrium).  r->n as it was
  * unless that LP is optimal.  -1 with err set when it cannot be made. */
@@ -1400,6 +1409,11 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             for (int p = 0; p < np; p++) r.n[p] = locked ? 0.0 : s->force[mc->dim * p] / r.fixed->W0;
             if (!locked && r.states != r.cone && search_start(&r, o, s, err)) goto fail;
             if (path_answer(&pj, &r, s, err)) goto fail;
+        } else if (retry && has_rigid(mc) && r.states != r.cone) {
+            /* a retry with rigid joints: from the associative forces at
+             * its own friction, as start 0 (4 x 12 dome at mu = inf
+             * certified only so, doc/seqlp.md 16) */
+            if (search_start(&r, o, s, err)) goto fail;
         } else {
             if (!isfinite(from)) break; /* no alpha to draw below */
             bl_lp_status st;

@@ -145,6 +145,13 @@ LUA
   tmux send-keys -t "$s" C-u 'print(string.up' Tab
   sleep 0.3
   tmux send-keys -t "$s" '("completed"))' Enter
+  sleep 0.5
+  # ... and a field past a literal index
+  tmux send-keys -t "$s" 'xs = { { alpha = 40 } }' Enter
+  sleep 0.3
+  tmux send-keys -t "$s" 'print("indexed", xs[1].alp' Tab
+  sleep 0.3
+  tmux send-keys -t "$s" ' + 2)' Enter
   sleep 1
   screen=$(tmux capture-pane -p -t "$s")
   tmux kill-session -t "$s" 2>/dev/null
@@ -156,6 +163,8 @@ LUA
     bash -c 'grep -qE "^after[[:space:]]+2" <<<"$1" && ! grep -qE "^inside" <<<"$1"' _ "$screen"
   check "Tab completes string.up to string.upper, and offers no globals after a call's colon" \
     bash -c 'grep -q "^COMPLETED" <<<"$1" && ! grep -q ":dofile" <<<"$1"' _ "$screen"
+  check "Tab completes a field past a literal index (xs[1].alp to xs[1].alpha)" \
+    grep -qE '^indexed[[:space:]]+42' <<<"$screen"
 
   # Ctrl-C during a long sequence of LPs (W4 with very many restarts): the
   # chunk stops, and the lowest certified answer so far is kept in last().

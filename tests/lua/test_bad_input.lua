@@ -310,13 +310,25 @@ T.raises(function() arch { n = 5, radius = 1, thickness = 0.2, length = 1, centr
 -- corners none is to blame, any 3 lie in a plane; of 5, the one lifted.
 T.raises(function()
   interface { cube, slab, points = { { -0.5, -0.5, 0.01 }, { 0.5, -0.5, 0 }, { 0.5, 0.5, 0 }, { -0.5, 0.5, 0 } } }
-end, "interface{ points }: 4 corners in no plane", "interface: field 'points' do not lie in one plane")
+end, "interface{ points }: 4 corners in no plane, by how much", "interface: field 'points' do not lie in one plane: "
+   .. "the plane through points 1, 2 and 3 misses point 4 by 0.01")
 for k = 1, 5 do
   local pts = { { -0.5, -0.5, 0 }, { 0.5, -0.5, 0 }, { 0.5, 0.5, 0 }, { 0, 0.6, 0 }, { -0.5, 0.5, 0 } }
   pts[k][3] = 0.01
   T.raises(function() interface { cube, slab, points = pts } end, ("interface{ points }: corner %d of 5 lifted"):format(k),
            ("interface: field 'points' point %d lies off the polygon's plane"):format(k))
 end
+-- bond{} with nothing to build, or lintels with nothing to span (both
+-- were accepted: the first built the slab alone), refused with the model
+-- as it was
+model { dim = 3 }
+T.eq(message(function() bond { length = 4, courses = 3, unit = { 0.4, 0.1 }, openings = { { 0, 4, 1, 3 } } } end),
+     "bond: field 'openings' leave no brick of the wall", "bond{ openings } over the whole wall")
+T.eq(message(function() bond { length = 4, courses = 3, unit = { 0.4, 0.1 }, lintel = 0.5 } end),
+     "bond: field 'lintel' is given, but there are no openings for lintels to span", "bond{ lintel } without openings")
+T.eq(message(function() facade { length = 4, returns = 2, courses = 3, unit = { 0.4, 0.1 }, lintel = 0.5 } end),
+     "facade: field 'lintel' is given, but there are no openings for lintels to span", "facade{ lintel } without openings")
+T.eq(stats().blocks, 0, "the refused bond{} and facade{} left no blocks")
 -- Found by a tester (2026-11-28): each read wrongly or crashed before.
 do
   -- a model whose finalizer has run (by hand here; a finalizer can also

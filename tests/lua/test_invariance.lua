@@ -74,6 +74,38 @@ do
          "a dome at survey coordinates (5e6, 4e6): the alpha of the dome at the origin")
 end
 
+-- Contact polygons do not depend on where the model lies: a 3D wall of
+-- boxes in running bond, turned 30 degrees about z, at the origin and
+-- moved to (123.4, -56.7, 8.9): every joint between two boxes is a
+-- rectangle of 4 corners (at the origin some came out with 5 and 6, a
+-- clipped edge cut at a point round-off put anywhere along it).
+do
+  local function corners(o)
+    local c, s = math.cos(math.rad(30)), math.sin(math.rad(30))
+    local function box_at(x0, y0, z0, x1, y1, z1, support)
+      local pts = {}
+      for _, x in ipairs { x0, x1 } do for _, y in ipairs { y0, y1 } do for _, z in ipairs { z0, z1 } do
+        pts[#pts + 1] = { o[1] + c * x - s * y, o[2] + s * x + c * y, o[3] + z }
+      end end end
+      block { points = pts, support = support }
+    end
+    model { dim = 3, mu = 0.5 }
+    box_at(-1, -1, -0.2, 2, 1, 0, true)
+    for course = 0, 2 do
+      local xs = course % 2 == 0 and { 0, 0.4, 0.8, 1.2 } or { 0, 0.2, 0.6, 1.0, 1.2 }
+      for i = 1, #xs - 1 do box_at(xs[i], 0, 0.2 * course, xs[i + 1], 0.2, 0.2 * (course + 1)) end
+    end
+    local count = {}
+    for k = 1, stats().interfaces do count[k] = #current():interface_info(k).points end
+    return count
+  end
+  local here, there = corners { 0, 0, 0 }, corners { 123.4, -56.7, 8.9 }
+  local four = #here == #there
+  for k = 1, #here do four = four and here[k] == 4 and there[k] == 4 end
+  T.ok(four, "a 3D wall turned 30 degrees: every joint a rectangle of 4 corners, at the origin and moved",
+       ("%d and %d joints"):format(#here, #there))
+end
+
 -- A distributed load on a vault equals the 2D one on its arch: the vault
 -- (3 rings, 3 m long) under q = 1 per unit area over the strip
 -- 0.8 <= x <= 1.2, and the arch 3 m thick under q = 3 per unit length over

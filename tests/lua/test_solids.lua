@@ -938,6 +938,17 @@ T.ok(pats.english.alpha <= 0.4 * (1 + 1e-9) and pats.stretcher.alpha <= 0.4 * (1
      and pats.english.verified and pats.stretcher.verified,
      "bond{ english } and { stretcher }, out of plane: verified, alpha <= t/h",
      ("%.5f, %.5f"):format(pats.english.alpha, pats.stretcher.alpha))
+-- without dilatancy the two leaves of the stretcher bond overturn each on
+-- its own, their collar joint sliding with no force across it: each
+-- leaf's t/h = 0.2/1.0, the lowest mechanism (one start certifies 0.2222,
+-- another solution; restarts find the leaves')
+model { dim = 3, mu = 0.65 }
+bond { length = 6, courses = 10, unit = { 0.4, 0.1 }, pattern = "stretcher" }
+load { live = "horizontal", direction = { 0, 1 } }
+local leaves = solve { flow = "nonassociative", starts = 3 }
+T.ok(math.abs(leaves.alpha - 0.2) <= 1e-7 and leaves.certified and leaves.verified,
+     "bond{ stretcher }, out of plane, without dilatancy, 3 restarts: each leaf's t/h = 0.2, certified (tolerance 1e-7)",
+     ("%.8f"):format(leaves.alpha))
 model { dim = 3, mu = 0.65 }
 local ob = bond { length = 6, courses = 10, unit = { 0.4, 0.1 }, openings = { { 2, 4, 3, 7 } } }
 local ovol = 0
