@@ -146,7 +146,21 @@ return function(M, load_ratio)
       return made
     end
     local ri, ro = R - th / 2, R + th / 2
-    local function at(r, a) return { c[1] + r * math.cos(a), c[2] + r * math.sin(a) } end
+    -- (at quarter turns exactly: a semicircle's springing hinge was at
+    -- y = 1.2e-16, cos and sin of pi rounded)
+    local function cos_sin(a)
+      local k = math.floor(a / (math.pi / 2) + 0.5)
+      if math.abs(a - k * math.pi / 2) <= 1e-15 * math.max(1, math.abs(a)) then
+        local exact = { { 1, 0 }, { 0, 1 }, { -1, 0 }, { 0, -1 } }
+        local e = exact[k % 4 + 1]
+        return e[1], e[2]
+      end
+      return math.cos(a), math.sin(a)
+    end
+    local function at(r, a)
+      local co, si = cos_sin(a)
+      return { c[1] + r * co, c[2] + r * si }
+    end
     local a0 = math.pi / 2 + half -- left springing
     local blocks, loads = {}, {}
     for i = 0, n - 1 do
@@ -171,6 +185,10 @@ return function(M, load_ratio)
         end
       end
     end
+    if fill and #loads == 0 then
+      fail(("field 'fill': field 'level' (%g) lies below the extrados everywhere: there is no fill to carry")
+        :format(fill.level))
+    end
     for _, l in ipairs(loads) do
       -- (the core refuses a weight whose moment it would not hold: say so
       -- of the fill, the field the user gave)
@@ -187,7 +205,8 @@ return function(M, load_ratio)
     local springs = {}
     for _, e in ipairs(t.springings == false and {} or { { a0, 1 }, { a0 - 2 * half, -1 } }) do
       local a, s = e[1], e[2]
-      local tx, ty = -math.sin(a) * s * th, math.cos(a) * s * th
+      local co, si = cos_sin(a)
+      local tx, ty = -si * s * th, co * s * th
       local p, q = at(ri, a), at(ro, a)
       springs[#springs + 1] = make({ p, q, { q[1] + tx, q[2] + ty }, { p[1] + tx, p[2] + ty } },
                                    { support = true }, 1)[1]

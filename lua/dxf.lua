@@ -1,7 +1,7 @@
 -- dxf.lua - the closed polylines of an ASCII DXF file, for import{}
 -- (import.lua).
 --
--- read(text, where, fail, step) -> shapes, skipped, digits
+-- read(text, where, fail, step) -> shapes, skipped, digits, units
 -- A shape is { name = layer, line, via, sagitta, stretch, points = {{x, y, z}, ...} }: every
 -- closed LWPOLYLINE, and every closed POLYLINE with its VERTEX entities up
 -- to SEQEND, of the ENTITIES section, in model space, and of the blocks
@@ -21,7 +21,14 @@
 -- Windows-1252 is read as such; "\U+00E4" escapes are read in every file.
 -- `digits[d]` counts the polylines' coordinates written with d decimals
 -- (not those in exponent notation).  Blocks that no INSERT places, and
--- blocks that hold no polylines, are not read.
+-- blocks that hold no polylines, are not read.  `units`: the header's
+-- $INSUNITS by name, nil where unitless or not given.
+
+-- $INSUNITS codes of the units a drawing is in (0, unitless, and the rare
+-- others: nil)
+local UNITS = { [1] = "inches", [2] = "feet", [4] = "millimetres", [5] = "centimetres", [6] = "metres",
+                [7] = "kilometres", [14] = "decimetres" }
+
 local M = {}
 
 local function finite(v) return type(v) == "number" and v == v and math.abs(v) < math.huge end
@@ -106,6 +113,7 @@ function M.read(text, where, fail, step)
   -- the header's code page and version, the entities of ENTITIES, and the
   -- blocks of BLOCKS, each with its entities (BLOCK to ENDBLK)
   local version, codepage, entities, blocks, section, closed = "", "", {}, {}, nil, false
+  local units -- the drawing's units, $INSUNITS, by name (nil: unitless or not said)
   local layers, layer = {}, nil -- the LAYER records of TABLES, each the pairs after its "0 LAYER"
   local block, into = nil, nil -- the block being read, and the list its pairs go to
   for i, p in ipairs(pairs_) do
@@ -120,6 +128,7 @@ function M.read(text, where, fail, step)
     elseif section == "HEADER" and prev and prev.code == 9 then
       if prev.value == "$ACADVER" then version = p.value end
       if prev.value == "$DWGCODEPAGE" then codepage = p.value end
+      if prev.value == "$INSUNITS" then units = UNITS[tonumber(p.value)] end
     elseif section == "ENTITIES" then
       if p.code == 0 then
         entities[#entities + 1] = { type = p.value, line = p.line }
@@ -475,7 +484,7 @@ function M.read(text, where, fail, step)
     unfinished()
   end
   walk(entities, IDENTITY, nil, nil)
-  return shapes, skipped, digits
+  return shapes, skipped, digits, units
 end
 
 return M

@@ -23,7 +23,7 @@ end }
 
 return function(M)
   local allowed = { file = true, format = true, support = true, scale = true, plane = true,
-                    density = true, thickness = true, arc_step = true }
+                    density = true, thickness = true, arc_step = true, layers = true }
   local function fail(msg) error("import: " .. msg, 0) end
 
   local function finite(v) return type(v) == "number" and v == v and math.abs(v) < math.huge end
@@ -146,11 +146,67 @@ return function(M)
 
   local planes = { xy = { 1, 2, 3 }, xz = { 1, 3, 2 }, yz = { 2, 3, 1 } }
 
+  -- Whether q lies inside the polygon pts by more than eps from its edges.
+  local function deep_inside(q, pts, eps)
+    local inside, n = false, #pts
+    for i = 1, n do
+      local a, b = pts[i], pts[i % n + 1]
+      local dx, dy = b[1] - a[1], b[2] - a[2]
+      local len2 = dx * dx + dy * dy
+      local s = len2 > 0 and math.max(0, math.min(1, ((q[1] - a[1]) * dx + (q[2] - a[2]) * dy) / len2)) or 0
+      if math.sqrt((a[1] + s * dx - q[1]) ^ 2 + (a[2] + s * dy - q[2]) ^ 2) <= eps then return false end
+      if (a[2] > q[2]) ~= (b[2] > q[2]) and q[1] < a[1] + (q[2] - a[2]) / (b[2] - a[2]) * dx then
+        inside = not inside
+      end
+    end
+    return inside
+  end
+
+  -- 2D: a shape with a corner inside another is refused, naming both (a
+  -- stone with a hole drawn as two polylines, a frame around the drawing:
+  -- each became a block, and the solve found them overlapping).  Shapes
+  -- by their boxes' left edges, each against those that begin within it.
+  local function inside_another(shapes, eps, where, format)
+    local box = {}
+    for i, s in ipairs(shapes) do
+      local b = { math.huge, math.huge, -math.huge, -math.huge, i = i }
+      for _, p in ipairs(s.points) do
+        b[1], b[2] = math.min(b[1], p[1]), math.min(b[2], p[2])
+        b[3], b[4] = math.max(b[3], p[1]), math.max(b[4], p[2])
+      end
+      box[i] = b
+    end
+    local order = {}
+    for i = 1, #box do order[i] = box[i] end
+    table.sort(order, function(x, y) return x[1] < y[1] or x[1] == y[1] and x.i < y.i end)
+    local function label(s)
+      return s.name ~= "" and (" (%s '%s')"):format(format == "dxf" and "layer" or "face group", s.name) or ""
+    end
+    for k, a in ipairs(order) do
+      for l = k + 1, #order do
+        local b = order[l]
+        if b[1] >= a[3] - eps then break end
+        if b[2] < a[4] - eps and a[2] < b[4] - eps then
+          for _, pair in ipairs { { a, b }, { b, a } } do
+            local outer, inner = shapes[pair[1].i], shapes[pair[2].i]
+            for _, q in ipairs(inner.points) do
+              if deep_inside(q, outer.points, eps) then
+                fail(("%s%s has a corner inside the shape of line %d%s: a block has no holes, and blocks may not "
+                      .. "overlap; draw a stone with a hole as pieces, and leave drawing aids (a frame) out with "
+                      .. "'layers'"):format(where(inner.line), label(inner), outer.line, label(outer)))
+              end
+            end
+          end
+        end
+      end
+    end
+  end
+
   return function(t)
     if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
     for k in pairs(t) do
       if not allowed[k] then
-        fail(("unknown field '%s' (fields: arc_step, density, file, format, plane, scale, support, thickness)")
+        fail(("unknown field '%s' (fields: arc_step, density, file, format, layers, plane, scale, support, thickness)")
              :format(tostring(k)))
       end
     end
@@ -193,25 +249,29 @@ return function(M)
         fail(("field '%s' must be a positive number, got %s"):format(k, report.show(t[k])))
       end
     end
-    local support = t.support
-    if support ~= nil and type(support) ~= "string" and type(support) ~= "function" then
-      fail("field 'support' must be a name, a Lua pattern or a function of a name, got " .. type(support))
-    end
-    if type(support) == "string" then
+    -- fields 'support' and 'layers': a name, a Lua pattern or a function
+    -- of a name, as a function of a name
+    local function matcher(k)
+      local given = t[k]
+      if given ~= nil and type(given) ~= "string" and type(given) ~= "function" then
+        fail(("field '%s' must be a name, a Lua pattern or a function of a name, got %s"):format(k, type(given)))
+      end
+      if type(given) ~= "string" then return given end
       -- a DXF's layer names, like the CAD program's, ignore case: the name
       -- and the pattern in lower case, but the letter after a % as it is
       -- (%A is not %a)
-      local given, fold = support, function(s) return s end
+      local fold = function(s) return s end
       if format == "dxf" then
         fold = string.lower
         given = given:gsub("(%%?)(.)", function(pc, c) return pc == "" and c:lower() or pc .. c end)
       end
       local valid = pcall(string.find, "", given)
-      support = function(name)
+      return function(name)
         name = fold(name)
         return name == given or valid and name:find(given) ~= nil
       end
     end
+    local support, layers = matcher("support"), matcher("layers")
 
     local fh, why = io.open(t.file, "rb")
     if not fh then fail(("field 'file': cannot open %s"):format(why)) end
@@ -221,15 +281,35 @@ return function(M)
     local function where(line) return ("'%s' line %d"):format(t.file, line) end
     text = text:gsub("^\239\187\191", ""):gsub("\r\n?", "\n") -- a byte-order mark; CR LF or CR alone
 
-    local shapes, skipped, digits
+    local shapes, skipped, digits, units
     if format == "obj" then
       shapes, skipped, digits = obj.read(text, where, solid, fail)
     else
-      shapes, skipped, digits = dxf.read(text, where, fail, math.rad(arc_step))
+      shapes, skipped, digits, units = dxf.read(text, where, fail, math.rad(arc_step))
     end
     if #shapes == 0 then
       fail(("'%s' has no %s"):format(t.file, format == "dxf" and "closed polylines in its ENTITIES section"
            or "faces"))
+    end
+    -- field 'layers': only the shapes whose names it matches; the others
+    -- are left out, by line
+    if layers then
+      local kept, names, seen = {}, {}, {}
+      for _, s in ipairs(shapes) do
+        local ok, is = pcall(layers, s.name)
+        if not ok then fail(("field 'layers' failed on the name '%s': %s"):format(s.name, tostring(is))) end
+        if is then
+          kept[#kept + 1] = s
+        else
+          skipped[#skipped + 1] = ("line %d: %s '%s', not in 'layers'"):format(s.line,
+            format == "dxf" and "layer" or "object", s.name)
+        end
+        if not seen[s.name] and #names < 8 then names[#names + 1], seen[s.name] = ("'%s'"):format(s.name), true end
+      end
+      if #kept == 0 then
+        fail(("field 'layers' matches no name in '%s' (its names: %s)"):format(t.file, table.concat(names, ", ")))
+      end
+      shapes = kept
     end
     -- scaled, each point once (shapes of an OBJ may share a vertex)
     local lo, hi, scaled = { math.huge, math.huge, math.huge }, { -math.huge, -math.huge, -math.huge }, {}
@@ -265,6 +345,7 @@ return function(M)
         end
         for i, p in ipairs(s.points) do s.points[i] = { p[u], p[v] } end
       end
+      inside_another(shapes, eps, where, format)
     end
 
     -- Every shape checked before the first block is made.
@@ -317,6 +398,7 @@ return function(M)
     end
     blocks = report.blocks(blocks)
     blocks.names, blocks.skipped, blocks.resolution = names, setmetatable(skipped, Skipped), resolution
+    blocks.units = units
     return blocks
   end
 end

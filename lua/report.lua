@@ -238,13 +238,20 @@ function Result.__tostring(r)
 end
 
 -- A file name that says another of the formats a result writes would hold
--- this one: refused, naming the method that writes it.
+-- this one: refused, naming the method that writes it; so is one that says
+-- a format no method writes (a picture or document: .jpg, .pdf).
 local WRITTEN = { png = true, svg = true, vtk = true, json = true }
+local OTHER = { jpg = true, jpeg = true, gif = true, bmp = true, tif = true, tiff = true, webp = true,
+                pdf = true, eps = true, ps = true, vtu = true, vtp = true, csv = true, txt = true }
 local function other_format(fmt, file)
   local ext = (file:match("%.(%w+)$") or ""):lower()
   if WRITTEN[ext] and ext ~= fmt then
     error(("%s: the file name '%s' ends in .%s, but this writes %s: use r:%s(file)")
           :format(fmt, file, ext, fmt:upper(), ext), 3)
+  end
+  if OTHER[ext] then
+    error(("%s: the file name '%s' ends in .%s, but this writes %s: name it .%s (results are written "
+           .. "as png, svg, vtk and json)"):format(fmt, file, ext, fmt:upper(), fmt), 3)
   end
 end
 

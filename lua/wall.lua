@@ -53,7 +53,12 @@ return function(M)
       for e, v in ipairs(course) do
         if not finite(v) or v == 0 then
           fail(("field 'courses' course %d entry %d must be a finite non-zero length, got %s")
-            :format(c, e, type(v) == "number" and tostring(v) or ("%s %q"):format(type(v), tostring(v))))
+            :format(c, e, type(v) ~= "number" and ("%s %q"):format(type(v), tostring(v))
+                          or v ~= v and "nan" or tostring(v)))
+        end
+        if math.abs(v) < 1e-6 then -- (a block of 1e-14 L was refused as block 9 of no area)
+          fail(("field 'courses' course %d entry %d is %g of the unit's length: a sliver, not a block or gap (at least 1e-6)")
+            :format(c, e, v))
         end
         len = len + math.abs(v)
         any = any or v > 0

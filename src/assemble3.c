@@ -328,7 +328,7 @@ bl_system *bl_system_build3(const bl_model *m, const bl_cone *cone, bl_friction_
     for (int i = 0; i < nb; i++) {
         int r = s->block_row[i];
         if (r < 0) continue;
-        double w = m->blocks[i].weight / s->W0;
+        double w = bl_system_weight(s, &m->blocks[i]);
         if (m->self_weight) {
             s->rhs[r] -= w * g.x;
             s->rhs[r + 1] -= w * g.y;

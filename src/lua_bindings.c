@@ -75,6 +75,9 @@ static void check_fields(lua_State *L, int idx, const char *fn, const char *cons
                     size_t len = strlen(list);
                     snprintf(list + len, sizeof list - len, "%s%s", a != allowed ? ", " : "", *a);
                 }
+                if (npos == 2) /* interface{ a = 1, b = 2 }: the blocks are unnamed */
+                    fail(L, "%s: unknown field '%s' (fields: %s; the two blocks come first, "
+                            "unnamed: %s{ 3, 7, ... })", fn, k, list, fn);
                 fail(L, "%s: unknown field '%s' (fields: %s)", fn, k, list);
             }
         } else if (lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 1 &&

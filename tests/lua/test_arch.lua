@@ -32,6 +32,16 @@ T.eq(r.states.sliding, 0, "no sliding at the least thickness with mu = 0.6")
 T.ok(r.states.rocking >= 4, "at least four hinges", ("%d rocking joints"):format(r.states.rocking))
 T.residuals(r, 1e-7, "arch answer verified")
 
+-- A semicircle's springing joints lie exactly on y = 0 (cos and sin of pi
+-- rounded put the hinge at y = 1.2e-16; a tester saw it printed)
+model { mu = 0.6 }
+arch { n = 9, radius = 1, thickness = 0.15 }
+load { direction = { -1, 0 } }
+local sp = solve {}.interfaces[1]
+T.ok(sp.hinge and sp.hinge[2] == 0 and sp.points[1][2] == 0 and sp.points[2][2] == 0,
+     "a semicircular arch pushed towards -x: its left springing hinge at y = 0 exactly",
+     sp.hinge and ("hinge at (%.17g, %.17g)"):format(sp.hinge[1], sp.hinge[2]) or "no hinge")
+
 -- 241 voussoirs at mu = 100: no joint can slide, so the non-associative
 -- answer is the associative one, which the simplex gives independently.
 -- (The interior point's unweighted path, on which the sequence starts,

@@ -161,9 +161,9 @@ local bad = {
   { "wall", function() wall { courses = { { 1 } }, origin = { 0 / 0, 1 } } end, "wall", "'origin'" },
   { "wall", function() wall { courses = { { 1 } }, density = 0 / 0 } end, "wall", "'density'" },
   { "wall", function() wall { courses = { { 1, 1 / 0 } } } end, "wall", "course 1 entry 2", "finite" },
-  -- the third block has no area: the two made before it are removed again
+  -- a third block of no area: refused before the first is made
   { "wall", function() wall { courses = { { 1, 1, 1e-300 } }, origin = { 20, 0 } } end, "wall",
-    "zero area" },
+    "course 1 entry 3", "sliver" },
   { "arch", function() arch { n = 0, radius = 1, thickness = 0.1 } end, "arch", "'n'" },
   { "arch", function() arch { n = 1, radius = 1, thickness = 0.1 } end, "arch", "'n'", "180 degrees" },
   { "arch", function() arch { n = 3, radius = 1, thickness = 0.1, centre = { 0 } } end, "arch", "'centre'" },
@@ -399,4 +399,25 @@ do
   T.raises(function() load { dead = { block = 1, moment = { 0, 1e13, 0 } } } end, "a 3D couple of 1e13 refused",
            "load dead: field 'moment' on block 1 is 1e+13, more than 1e+12 times the block's weight times its size")
 end
+-- Found by a 2D tester (2026-11-28): refusals that named the wrong thing,
+-- or none
+model { mu = 0.6 }
+T.eq(message(function() wall { courses = { { 1, 1e-14 } } } end),
+     "wall: field 'courses' course 1 entry 2 is 1e-14 of the unit's length: a sliver, not a block or gap (at least 1e-6)",
+     "wall{} with a sliver of 1e-14: the course and entry named (it named block 9, rolled back)")
+T.eq(message(function() wall { courses = { { 1, 0 / 0 } } } end),
+     "wall: field 'courses' course 1 entry 2 must be a finite non-zero length, got nan", "wall{} with NaN: 'nan'")
+T.eq(message(function() arch { n = 9, radius = 1, thickness = 0.15, fill = { level = -5, density = 1 } } end),
+     "arch: field 'fill': field 'level' (-5) lies below the extrados everywhere: there is no fill to carry",
+     "arch{ fill } below the arch: refused (it added nothing)")
+T.eq(stats().blocks, 0, "the refused wall{} and arch{} left no blocks")
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } }, support = true }
+block { vertices = { { 0, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } } }
+T.raises(function() interface { a = 1, b = 2, mu = 0.1 } end, "interface{ a = 1, b = 2 }: the blocks are unnamed",
+         "interface: unknown field '", "(fields: mu, cohesion, points, model, mu_t; the two blocks come first, unnamed: "
+         .. "interface{ 3, 7, ... })")
+local sliding = solve { flow = "associative" }
+T.eq(message(function() sliding:png("collapse.jpg") end),
+     "png: the file name 'collapse.jpg' ends in .jpg, but this writes PNG: name it .png (results are written as png, "
+     .. "svg, vtk and json)", "r:png to a .jpg name: refused (it wrote a PNG there)")
 T.done()

@@ -642,5 +642,31 @@ T.raises(function() contacts {} end, "DXF rounded to 1e-3 on a ramp: detection f
          "imported blocks are drawn to 0.001", "contacts{ tol = 0.002 }")
 T.eq(contacts { tol = 0.002 }, 9, "DXF rounded to 1e-3 on a ramp: with tol = 0.002, the 9 joints of 5 bricks on a ramp")
 
+-- A shape with a corner inside another (a stone with a hole drawn as two
+-- polylines, a frame around the drawing) is refused naming both (a tester
+-- found each became a block, refused only at the solve as overlapping);
+-- 'layers' leaves the frame out; the header's $INSUNITS shows in .units.
+local function sq(layer, x0, y0, x1, y1)
+  return ("0\nLWPOLYLINE\n8\n%s\n90\n4\n70\n1\n10\n%g\n20\n%g\n10\n%g\n20\n%g\n10\n%g\n20\n%g\n10\n%g\n20\n%g\n")
+    :format(layer, x0, y0, x1, y0, x1, y1, x0, y1)
+end
+local E1 = "0\nENDSEC\n0\nEOF\n"
+refused(2, { file = write(".dxf", E0 .. sq("stone", 0, 0, 1000, 1000) .. sq("stone", 400, 400, 600, 600) .. E1) },
+        "a stone with a hole", "line 29 (layer 'stone') has a corner inside the shape of line 5 (layer 'stone')",
+        "no holes")
+local framed = write(".dxf", "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n" .. E0
+                     .. sq("frame", -100, -300, 2100, 1100) .. sq("stone", 0, 0, 1000, 500)
+                     .. sq("stone", 1000, 0, 2000, 500) .. sq("base", -50, -200, 2050, 0) .. E1)
+refused(2, { file = framed }, "a frame around the drawing", "(layer 'base') has a corner inside the shape of line 15 (layer 'frame')",
+        "'layers'")
+refused(2, { file = framed, layers = "wall" }, "layers that match no name", "field 'layers' matches no name",
+        "'frame', 'stone', 'base'")
+model { mu = 0.65 }
+local kept = import { file = framed, layers = function(name) return name ~= "frame" end, support = "base", scale = 0.001 }
+T.ok(#kept == 3 and kept.units == "millimetres" and tostring(kept.skipped):find("layer 'frame', not in 'layers'", 1, true),
+     "import{ layers }: the frame left out and listed, the drawing's units millimetres", tostring(kept.skipped))
+T.near(solve { flow = "associative" }.alpha, 0.65, 1e-7,
+       "the two stones of the framed drawing (b/h = 2) slide on their base at mu = 0.65")
+
 for _, f in ipairs(files) do os.remove(f) end
 T.done()

@@ -74,6 +74,21 @@ do
          "a dome at survey coordinates (5e6, 4e6): the alpha of the dome at the origin")
 end
 
+-- One density and one thickness, whatever their values, give the same
+-- scaled LP to the last bit, hence the same non-associative answer (the
+-- sequence of LPs amplifies round-off: W5 gave 0.20930 at density 1 and
+-- 0.21956 at 18).  Tolerance 1e-12: the same computation.
+do
+  local function w5(density, thickness)
+    model { mu = 0.65, density = density, thickness = thickness }
+    wall { courses = walls.W5, unit = { 0.4, 0.175 } }
+    return solve {}.alpha
+  end
+  local unit = w5(1, 1)
+  T.near(w5(18, 1), unit, 1e-12, "W5, non-associative: density 18 gives the alpha of density 1")
+  T.near(w5(22.5, 0.45), unit, 1e-12, "W5, non-associative: density 22.5 and thickness 0.45, the alpha of 1 and 1")
+end
+
 -- Contact polygons do not depend on where the model lies: a 3D wall of
 -- boxes in running bond, turned 30 degrees about z, at the origin and
 -- moved to (123.4, -56.7, 8.9): every joint between two boxes is a
