@@ -164,41 +164,66 @@ return function(M)
 
   -- 2D: a shape with a corner inside another is refused, naming both (a
   -- stone with a hole drawn as two polylines, a frame around the drawing:
-  -- each became a block, and the solve found them overlapping).  Shapes
-  -- by their boxes' left edges, each against those that begin within it.
-  local function inside_another(shapes, eps, where, format)
-    local box = {}
+  -- each became a block, and the solve found them overlapping).  A corner
+  -- counts from eps, or from 10 times either shape's own resolution (its
+  -- file's digits, its arcs' chords: the contact detection's tolerance).
+  -- The pairs whose boxes meet come from a grid of cells about a shape's
+  -- size; a shape over more than MANY cells (a frame) meets every other.
+  local MANY = 4096
+  local function inside_another(shapes, eps, own, where, format)
+    local box, span = {}, 0
     for i, s in ipairs(shapes) do
-      local b = { math.huge, math.huge, -math.huge, -math.huge, i = i }
+      local b = { math.huge, math.huge, -math.huge, -math.huge }
       for _, p in ipairs(s.points) do
         b[1], b[2] = math.min(b[1], p[1]), math.min(b[2], p[2])
         b[3], b[4] = math.max(b[3], p[1]), math.max(b[4], p[2])
       end
       box[i] = b
+      span = span + (b[3] - b[1] + b[4] - b[2]) / 2
     end
-    local order = {}
-    for i = 1, #box do order[i] = box[i] end
-    table.sort(order, function(x, y) return x[1] < y[1] or x[1] == y[1] and x.i < y.i end)
+    local cell = math.max(span / #shapes, eps)
     local function label(s)
-      return s.name ~= "" and (" (%s '%s')"):format(format == "dxf" and "layer" or "face group", s.name) or ""
+      return s.name ~= "" and (" (%s '%s')"):format(format == "dxf" and "layer" or "object", s.name) or ""
     end
-    for k, a in ipairs(order) do
-      for l = k + 1, #order do
-        local b = order[l]
-        if b[1] >= a[3] - eps then break end
-        if b[2] < a[4] - eps and a[2] < b[4] - eps then
-          for _, pair in ipairs { { a, b }, { b, a } } do
-            local outer, inner = shapes[pair[1].i], shapes[pair[2].i]
-            for _, q in ipairs(inner.points) do
-              if deep_inside(q, outer.points, eps) then
-                fail(("%s%s has a corner inside the shape of line %d%s: a block has no holes, and blocks may not "
-                      .. "overlap; draw a stone with a hole as pieces, and leave drawing aids (a frame) out with "
-                      .. "'layers'"):format(where(inner.line), label(inner), outer.line, label(outer)))
-              end
-            end
+    local checked = {}
+    local function check(i, j)
+      local key = i < j and i * (#shapes + 1) + j or j * (#shapes + 1) + i
+      if i == j or checked[key] then return end
+      checked[key] = true
+      local a, b = box[i], box[j]
+      local e = math.max(eps, 10 * own(shapes[i]), 10 * own(shapes[j]))
+      if not (b[1] < a[3] - e and a[1] < b[3] - e and b[2] < a[4] - e and a[2] < b[4] - e) then return end
+      for _, pair in ipairs { { i, j }, { j, i } } do
+        local outer, inner = shapes[pair[1]], shapes[pair[2]]
+        for _, q in ipairs(inner.points) do
+          if deep_inside(q, outer.points, e) then
+            fail(("%s%s has a corner inside the shape of line %d%s: a block has no holes, and blocks may not "
+                  .. "overlap; draw a stone with a hole as pieces, and leave drawing aids (a frame) out with "
+                  .. "'layers'"):format(where(inner.line), label(inner), outer.line, label(outer)))
           end
         end
       end
+    end
+    local cells, big = {}, {}
+    for i, b in ipairs(box) do
+      local x0, x1 = math.floor(b[1] / cell), math.floor(b[3] / cell)
+      local y0, y1 = math.floor(b[2] / cell), math.floor(b[4] / cell)
+      if (x1 - x0 + 1) * (y1 - y0 + 1) > MANY then
+        big[#big + 1] = i
+      else
+        for x = x0, x1 do
+          for y = y0, y1 do
+            local key = x .. "," .. y
+            local list = cells[key]
+            if not list then list = {}; cells[key] = list end
+            for _, j in ipairs(list) do check(i, j) end
+            list[#list + 1] = i
+          end
+        end
+      end
+    end
+    for _, i in ipairs(big) do
+      for j = 1, #shapes do check(i, j) end
     end
   end
 
@@ -327,6 +352,11 @@ return function(M)
     local resolution = fixed_point(digits)
     resolution = resolution and resolution * scale
     local eps = math.max(1e-9 * size, 2 * (resolution or 0))
+    -- a shape's own resolution: the file's, as its INSERTs scale it, or
+    -- its arcs' chords' sagitta if coarser
+    local function own_resolution(s)
+      return math.max((resolution or 0) * (s.stretch or 1), (s.sagitta or 0) * scale)
+    end
 
     -- In 2D every shape lies in the plane of the first one.
     if not solid then
@@ -345,7 +375,7 @@ return function(M)
         end
         for i, p in ipairs(s.points) do s.points[i] = { p[u], p[v] } end
       end
-      inside_another(shapes, eps, where, format)
+      inside_another(shapes, eps, own_resolution, where, format)
     end
 
     -- Every shape checked before the first block is made.
@@ -368,9 +398,7 @@ return function(M)
 
     local blocks, names = {}, {}
     for i, s in ipairs(shapes) do
-      -- the block's own resolution: the file's, as its INSERTs scale it,
-      -- or its arcs' chords' sagitta if coarser
-      local own = math.max((resolution or 0) * (s.stretch or 1), (s.sagitta or 0) * scale)
+      local own = own_resolution(s)
       local fields = { support = marks[i], density = t.density, resolution = own > 0 and own or nil }
       if solid then
         local d = 0

@@ -35,7 +35,7 @@ bl_system *bl_system_start(const bl_model *m, int per_block, bl_error *err)
 {
     bl_system *s = calloc(1, sizeof *s);
     int nb = m->nblocks, nfree = 0;
-    double vsum = 0.0, lsum = 0.0, rho0 = 0.0, t0 = 0.0;
+    double wsum = 0.0, vsum = 0.0, lsum = 0.0;
     if (s) s->block_row = malloc((size_t)(nb ? nb : 1) * sizeof *s->block_row);
     if (!s || !s->block_row) {
         bl_system_free(s);
@@ -43,13 +43,16 @@ bl_system *bl_system_start(const bl_model *m, int per_block, bl_error *err)
         return NULL;
     }
     s->dim = m->dim;
+    s->uniform = 1;
     for (int i = 0; i < nb; i++) {
         const bl_block *b = &m->blocks[i];
         s->block_row[i] = b->support ? -1 : per_block * nfree++;
         if (!b->support) {
+            double t = m->dim == 3 ? 1.0 : b->thickness;
+            if (nfree == 1) s->rho0 = b->density, s->t0 = t;
+            s->uniform = s->uniform && b->density == s->rho0 && t == s->t0;
+            wsum += b->weight;
             vsum += m->dim == 3 ? b->volume : b->area;
-            rho0 = fmax(rho0, b->density);
-            t0 = m->dim == 3 ? 1.0 : fmax(t0, b->thickness);
         }
         lsum += m->dim == 3 ? cbrt(b->volume) : sqrt(b->area);
     }
@@ -58,10 +61,8 @@ bl_system *bl_system_start(const bl_model *m, int per_block, bl_error *err)
         bl_error_set(err, "solve: the model has no free block");
         return NULL;
     }
-    s->rho0 = rho0;
-    s->t0 = t0;
     s->V0 = vsum / nfree;
-    s->W0 = rho0 * s->V0 * t0;
+    s->W0 = s->uniform ? s->rho0 * s->V0 * s->t0 : wsum / nfree;
     s->L0 = lsum / nb;
     s->nrows = per_block * nfree;
     return s;
@@ -69,8 +70,8 @@ bl_system *bl_system_start(const bl_model *m, int per_block, bl_error *err)
 
 double bl_system_weight(const bl_system *s, const bl_block *b)
 {
-    double t = s->dim == 3 ? 1.0 : b->thickness / s->t0;
-    return b->density / s->rho0 * t * ((s->dim == 3 ? b->volume : b->area) / s->V0);
+    if (!s->uniform) return b->weight / s->W0;
+    return (s->dim == 3 ? b->volume : b->area) / s->V0;
 }
 
 int bl_system_allocate(bl_system *s, const bl_model *m, int nforce, int npoints, size_t nnz_max)

@@ -68,8 +68,10 @@ typedef struct bl_system {
                               * for a pyramid edge, 1 for a twist or cohesive couple);
                               * 0 otherwise */
     double L0, W0;           /* length and force scales */
-    double rho0, t0, V0;     /* W0 = rho0 t0 V0: the free blocks' largest density,
-                              * (2D) largest thickness, mean volume (2D: area) */
+    int uniform;             /* the free blocks have one density rho0 and (2D)
+                              * thickness t0: W0 = rho0 t0 V0, V0 their mean
+                              * volume (2D: area); else W0 their mean weight */
+    double rho0, t0, V0;
     double *row_scale;       /* per row: the factor a light block's rows were
                               * multiplied by (bl_system_finish), NULL: all 1 */
     bl_friction_form form;
@@ -155,10 +157,10 @@ void bl_system_free(bl_system *s);
  * live load fL, the columns before it filled up to entry nz (NULL with err
  * set, the system freed, when there is no live load). */
 bl_system *bl_system_start(const bl_model *m, int per_block, bl_error *err);
-/* Block b's weight in units of W0, as (rho / rho0) (t / t0) (V / V0): with
- * one density (and thickness) the LP does not change with it by a bit,
- * where W / W0 rounds differently (the sequence of LPs then reached other
- * solutions: W5 0.20930 at density 1, 0.21956 at 18). */
+/* Block b's weight in units of W0: with one density and thickness V / V0,
+ * so that the LP does not change with them by a bit, where W / W0 rounds
+ * differently (the sequence of LPs then reached other solutions: W5
+ * 0.20930 at density 1, 0.21956 at 18); else W / W0. */
 double bl_system_weight(const bl_system *s, const bl_block *b);
 int bl_system_allocate(bl_system *s, const bl_model *m, int nforce, int npoints, size_t nnz_max);
 bl_system *bl_system_finish(bl_system *s, int nz, double *fL, bl_error *err);

@@ -119,33 +119,44 @@ static int clip(const bl_vec2 *s, int ns, const bl_vec2 *c, int nc, bl_vec2 *out
     return n;
 }
 
-/* Drops points closer than tol to the one before, then points within tol
- * of the line through their neighbours: where two faces share an edge,
- * the clipping cuts that edge at a point that round-off places anywhere
- * along it, and the polygon's points (the LP's contact points) then
- * depended on where the model lay (a wall turned by 30 degrees had square
- * joints of 5 and 6 points at the origin, of 4 moved away from it). */
+enum { MAXV = 256 };
+
+/* Points within this share of a polygon's extent of the line through
+ * their neighbours lie on it but for round-off. */
+#define ON_LINE 1e-9
+
+/* Drops points closer than tol to the one before, then points on the line
+ * through their two neighbours (to round-off, ON_LINE): where two faces
+ * share an edge, the clipping cuts that edge at a point that round-off
+ * places anywhere along it, and the polygon's points (the LP's contact
+ * points) then depended on where the model lay (a wall turned by 30
+ * degrees had square joints of 5 and 6 points at the origin, of 4 moved
+ * away from it).  Each point is judged against its neighbours as given,
+ * so that no removal moves the line the next is judged against. */
 static int simplify(bl_vec2 *q, int n, double tol)
 {
     int m = 0;
     for (int i = 0; i < n; i++)
         if (m == 0 || bl_v2_norm(bl_v2_sub(q[i], q[m - 1])) > tol) q[m++] = q[i];
     while (m > 1 && bl_v2_norm(bl_v2_sub(q[m - 1], q[0])) <= tol) m--;
-    for (int i = 0; m > 3 && i < m;) {
+    if (m <= 3) return m;
+    double extent = 0.0;
+    for (int i = 1; i < m; i++) extent = fmax(extent, bl_v2_norm(bl_v2_sub(q[i], q[0])));
+    char on[2 * MAXV];
+    int kept = m;
+    for (int i = 0; i < m; i++) {
         bl_vec2 a = q[(i + m - 1) % m], b = q[(i + 1) % m], ab = bl_v2_sub(b, a);
         double len = bl_v2_norm(ab);
-        if (len > 0.0 && fabs(bl_v2_cross(ab, bl_v2_sub(q[i], a))) <= tol * len) {
-            memmove(q + i, q + i + 1, (size_t)(m - i - 1) * sizeof *q);
-            m--;
-            if (i > 0) i--; /* its neighbour before may now lie on a line too */
-        } else {
-            i++;
-        }
+        on[i] = len > 0.0 && fabs(bl_v2_cross(ab, bl_v2_sub(q[i], a))) <= ON_LINE * extent * len;
+        kept -= on[i];
     }
-    return m;
+    if (kept < 3) return m;
+    int k = 0;
+    for (int i = 0; i < m; i++)
+        if (!on[i]) q[k++] = q[i];
+    return k;
 }
 
-enum { MAXV = 256 };
 
 /* Called for each overlap of two faces: the polygon (k points, in the
  * first face's frame) and its area; a nonzero return stops the search. */

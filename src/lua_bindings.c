@@ -75,7 +75,10 @@ static void check_fields(lua_State *L, int idx, const char *fn, const char *cons
                     size_t len = strlen(list);
                     snprintf(list + len, sizeof list - len, "%s%s", a != allowed ? ", " : "", *a);
                 }
-                if (npos == 2) /* interface{ a = 1, b = 2 }: the blocks are unnamed */
+                lua_rawgeti(L, idx, 1);
+                int unnamed = lua_isnil(L, -1);
+                lua_pop(L, 1);
+                if (npos == 2 && unnamed) /* interface{ a = 1, b = 2 }: the blocks are unnamed */
                     fail(L, "%s: unknown field '%s' (fields: %s; the two blocks come first, "
                             "unnamed: %s{ 3, 7, ... })", fn, k, list, fn);
                 fail(L, "%s: unknown field '%s' (fields: %s)", fn, k, list);
@@ -608,13 +611,24 @@ static int model_interface(lua_State *L)
         int r = bl_polygon3_check(s.p3, n, tol, &nrm, &area);
         if (r == -1) return fail(L, "interface: field 'points' encloses no area (on a line?)");
         if (r == -2) return fail(L, "interface: field 'points' is not a convex polygon in order");
-        if (r == -3) { /* no one corner to blame: say how far the last is */
-            bl_vec3 u = bl_v3_sub(s.p3[1], s.p3[0]), v = bl_v3_sub(s.p3[2], s.p3[0]);
-            bl_vec3 w = bl_v3_cross(u, v);
-            double off = fabs(bl_v3_dot(bl_v3_sub(s.p3[n - 1], s.p3[0]), w)) / bl_v3_norm(w);
+        if (r == -3) { /* no one corner to blame: how far from the plane of
+                        * points 1, 2 and the first off their line the
+                        * farthest is */
+            bl_vec3 u = bl_v3_sub(s.p3[1], s.p3[0]), w = {0, 0, 0};
+            int third = 2;
+            for (; third < n; third++) {
+                w = bl_v3_cross(u, bl_v3_sub(s.p3[third], s.p3[0]));
+                if (bl_v3_norm(w) > tol * bl_v3_norm(u)) break;
+            }
+            int far = 0;
+            double off = 0.0;
+            for (int i = 0; third < n && i < n; i++) {
+                double d = fabs(bl_v3_dot(bl_v3_sub(s.p3[i], s.p3[0]), w)) / bl_v3_norm(w);
+                if (d > off) off = d, far = i;
+            }
             return fail(L, "interface: field 'points' do not lie in one plane: the plane through "
-                           "points 1, 2 and 3 misses point %d by %.3g (tol = %.3g)",
-                        n, off, tol);
+                           "points 1, 2 and %d misses point %d by %.3g (tol = %.3g)",
+                        third + 1, far + 1, off, tol);
         }
         if (r < 0)
             return fail(L, "interface: field 'points' point %d lies off the polygon's plane "

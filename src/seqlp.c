@@ -921,11 +921,12 @@ static void state_forces(run *r, bl_lp *lp, bl_lp_status st)
 /* Start 0's normal forces where some joint is rigid, and a retry's: the
  * associative answer's in r->states (rigid joints at the search's
  * friction), which loads them no more than the fixed LPs let them carry
- * (the associative
- * forces with mu = inf leaned on the shear of joints with no normal
- * force: a dome's first fixed LP had no equilibrium).  r->n as it was
- * unless that LP is optimal.  -1 with err set when it cannot be made. */
-static int search_start(run *r, const bl_seqlp_options *o, bl_solution *s, bl_error *err)
+ * (the associative forces with mu = inf leaned on the shear of joints
+ * with no normal force: a dome's first fixed LP had no equilibrium).
+ * r->n as it was unless that LP is optimal; its status in *status.  -1
+ * with err set when it cannot be made. */
+static int search_start(run *r, const bl_seqlp_options *o, bl_solution *s, bl_lp_status *status,
+                        bl_error *err)
 {
     const bl_system *c = r->states;
     for (int j = 0; j < c->ncols; j++) {
@@ -938,6 +939,7 @@ static int search_start(run *r, const bl_seqlp_options *o, bl_solution *s, bl_er
     if (state_lp(r, &o->base, &lp, &st, err)) return -1;
     s->lps++;
     state_forces(r, lp, st);
+    *status = st;
     return 0;
 }
 
@@ -1407,13 +1409,19 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         if (search_friction(&r, k, err)) goto fail;
         if (k == 0) {
             for (int p = 0; p < np; p++) r.n[p] = locked ? 0.0 : s->force[mc->dim * p] / r.fixed->W0;
-            if (!locked && r.states != r.cone && search_start(&r, o, s, err)) goto fail;
+            bl_lp_status st; /* (an LP that fails leaves the associative forces) */
+            if (!locked && r.states != r.cone && search_start(&r, o, s, &st, err)) goto fail;
             if (path_answer(&pj, &r, s, err)) goto fail;
         } else if (retry && has_rigid(mc) && r.states != r.cone) {
             /* a retry with rigid joints: from the associative forces at
              * its own friction, as start 0 (4 x 12 dome at mu = inf
              * certified only so, doc/seqlp.md 16) */
-            if (search_start(&r, o, s, err)) goto fail;
+            bl_lp_status st;
+            if (search_start(&r, o, s, &st, err)) goto fail;
+            if (st != BL_LP_OPTIMAL) { /* as a random state that cannot be drawn */
+                if (st == BL_LP_INTERRUPTED || st == BL_LP_TIME_LIMIT) stop = st;
+                continue;
+            }
         } else {
             if (!isfinite(from)) break; /* no alpha to draw below */
             bl_lp_status st;
