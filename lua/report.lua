@@ -78,6 +78,11 @@ function Result.__tostring(r)
       say("  associative alpha = %.6g%s; %d LPs in the sequence%s", r.alpha_assoc,
           r.certified and "" or " (an upper bound on the non-associative one)", r.lps, last)
     end
+    if r.certified and r.alpha == 0 and r.stands then
+      say("  without dilatancy a mechanism is possible under the dead load alone: forces that fit it")
+      say("  exist at alpha = 0 (and below), though the dead load alone also has an equilibrium that")
+      say("  holds; which one the structure takes, the model cannot tell (doc/theory.md 6)")
+    end
     if r.path and r.path.taken then
       say("  the first start from the path of the non-associative problem: %d Newton steps,", r.path.steps)
       say("  alpha %.6g, products %s, %.3f s", r.path.alpha, g(r.path.products), r.path.time)

@@ -1305,6 +1305,9 @@ static int model_solve(lua_State *L)
     so.beta = number_field(L, 2, "solve", "beta", so.beta, POSITIVE);
     if (so.beta > 1) fail(L, "solve: field 'beta' must be in (0, 1], got %g", so.beta);
     so.settle = number_field(L, 2, "solve", "settle", so.settle, POSITIVE);
+    if (so.settle > 0.1) /* (a relative change of alpha: 2 was taken, and meant nothing) */
+        fail(L, "solve: field 'settle' must be in (0, 0.1] (the relative change of alpha between LPs "
+                "below which it counts as settled), got %g", so.settle);
     so.slip = number_field(L, 2, "solve", "slip", so.slip, POSITIVE);
     if (so.slip > 1e-2)
         fail(L, "solve: field 'slip' must be in (0, 0.01] (a fraction of the largest motion "

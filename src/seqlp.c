@@ -59,6 +59,8 @@ typedef struct run {
     double *yc;            /* a settled LP's mechanism, for its certificate */
     double *xc;            /* the certificate's forces (certify) */
     const struct path_job *warm; /* the point the first fixed LP starts from, or NULL */
+    double floor;          /* the least alpha a certificate may give: 0 where
+                            * the dead load alone stands, else -inf */
 } run;
 
 /* The path of the non-associative problem, followed on the calling
@@ -367,6 +369,18 @@ static bl_lp_status certificate(run *r, double alpha, const double *y,
     int na = r->cone->nforce;
     *ok = 0;
     bl_lp_status st = certificate_lp(r, o, 0.0, s, err);
+    if (st == BL_LP_OPTIMAL && bl_lp_primal(r->lp_cone)[na] < r->floor) {
+        /* forces fit the mechanism below the least alpha that may be
+         * certified: at it, or not at all (bounding alpha in the LP
+         * itself cost the interior point digits everywhere) */
+        r->clo[na] = r->chi[na] = *cert = r->floor;
+        bl_lp_free(r->lp_cone);
+        r->lp_cone = NULL;
+        st = certificate_lp(r, o, 0.0, s, err);
+        if (st == BL_LP_FAILED && !r->lp_cone) return st;
+        if (st == BL_LP_OPTIMAL) *ok = verified(r, *cert, y, so);
+        return st == BL_LP_OPTIMAL && *ok ? st : BL_LP_INFEASIBLE;
+    }
     if (st == BL_LP_OPTIMAL) {
         *cert = bl_lp_primal(r->lp_cone)[na];
         *ok = verified(r, *cert, y, so);
@@ -380,6 +394,7 @@ static bl_lp_status certificate(run *r, double alpha, const double *y,
     if (st != BL_LP_OPTIMAL && st != BL_LP_UNBOUNDED && st != BL_LP_ITERATION_LIMIT &&
         st != BL_LP_FAILED)
         return st;
+    if (alpha < r->floor) return BL_LP_INFEASIBLE; /* below what may be certified */
     r->clo[na] = r->chi[na] = *cert = alpha;
     /* from scratch: the interior point re-solving from the lowest alpha's
      * path did not converge on the 3D 4,935-block wall (and handed the LP
@@ -434,7 +449,7 @@ static bl_lp_status certify(run *r, double alpha, const double *y, const bl_seql
         if (sl == BL_LP_FAILED && !r->lp_cone) return sl;
         if (sl != BL_LP_OPTIMAL) break;
         double al = bl_lp_primal(r->lp_cone)[r->cone->nforce];
-        int pass = verified(r, al, y, so);
+        int pass = al >= r->floor && verified(r, al, y, so);
         if (so->base.verbose)
             fprintf(stderr, "seqlp certificate: with a cost %g on leaning, alpha %.8g, %s\n", rho,
                     al, pass ? "verified" : "not verified");
@@ -1392,6 +1407,14 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
      * (below it the state's LP is infeasible and the restart lost: a block
      * on a slope ran 8 of 11 starts). */
     double least = s->stands == 0 && s->alpha_min > 0.0 ? s->alpha_min : 0.0;
+    /* Where the dead load alone stands, the answer is the multiplier of a
+     * live load applied from zero: a certificate's alpha at least 0.
+     * Below it forces may fit a mechanism too (a block over an opening,
+     * held at one end by a corner and clamped by the course above, can
+     * turn down as that course slides over it: a wall at mu = 2 certified
+     * -0.63 and was called unstable, though it stands), but they do not
+     * bear on the load as applied. */
+    r.floor = s->stands == 1 ? 0.0 : -INFINITY;
     unsigned long long rng = o->seed;
     bl_lp_status stop = BL_LP_OPTIMAL;
     /* Without sliding joints the first LP settles and certifies at once.

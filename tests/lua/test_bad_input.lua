@@ -420,4 +420,7 @@ local sliding = solve { flow = "associative" }
 T.eq(message(function() sliding:png("collapse.jpg") end),
      "png: the file name 'collapse.jpg' ends in .jpg, but this writes PNG: name it .png (results are written as png, "
      .. "svg, vtk and json)", "r:png to a .jpg name: refused (it wrote a PNG there)")
+T.eq(message(function() solve { flow = "nonassociative", settle = 2 } end),
+     "solve: field 'settle' must be in (0, 0.1] (the relative change of alpha between LPs below which it counts "
+     .. "as settled), got 2", "solve{ settle = 2 }: refused (it was taken, and meant nothing)")
 T.done()

@@ -540,4 +540,22 @@ local hi = solve { progress = false }
 T.ok(hi.certified and hi.verified and hi.alpha <= 24 / 35 + 1e-9,
      "W1 at mu = 1000: at most the corner's 24/35, certified", ("%s %.9f"):format(hi.status, hi.alpha))
 
+-- alpha from zero (doc/theory.md 6): a wall at mu = 2 whose dead load
+-- alone stands (the associative LP's check, and its alpha 0.5485 > 0) has
+-- a block over an opening that, without dilatancy, can turn down under the
+-- dead load with forces that fit down to alpha = -0.63; it was reported
+-- "unstable" at -0.63.  The live load applied from zero: alpha >= 0, at
+-- most the associative alpha, certified and verified, by either method.
+do
+  model { mu = 2 }
+  wall { courses = { { 2, 1, 2 }, { .5, 1, 1, -2, .5 }, { 1, -2, 1, 1 }, { .5, 1, 1, -1, 1, .5 }, { 1, 1, 1, 1, 1 } },
+         unit = { 0.4, 0.175 } }
+  local assoc = solve { flow = "associative" }
+  for _, method in ipairs { "seqlp", "mpec" } do
+    local r = solve { method = method }
+    T.ok(assoc.stands and r.stands and r.status == "optimal" and r.alpha >= 0 and r.alpha <= assoc.alpha
+         and r.verified, ("a wall that stands under its dead load, %s: not unstable, 0 <= alpha <= %.4f, verified"):format(method, assoc.alpha),
+         ("%s %s"):format(r.status, tostring(r.alpha)))
+  end
+end
 T.done()
