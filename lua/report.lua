@@ -119,7 +119,7 @@ function Result.__tostring(r)
     local paths = #r.starts - (went_on and 1 or 0)
     if r.none_dilates then -- said above
     elseif r.assoc_is_solution then
-      say("  (with unlimited friction alpha is the same: the associative answer is itself a")
+      say("  (with unlimited friction the associative alpha is the same: that answer is itself a")
       if paths > 1 then
         say("  non-associative solution; %d restarts looked for lower ones)", paths - 1)
       else
