@@ -675,13 +675,14 @@ static void fixed_bounds(run *r)
     }
 }
 
-/* Sets the friction of the search of start k, and the system its stress
- * states come from: start 0 with every joint's own friction (rigid ones
- * at BL_SEQLP_MU_RIGID); the restarts in turn at each of
- * BL_SEQLP_MU_TRIED, rigid joints at it and others at most at it: a low
- * friction lets the search find mechanisms that open as they slide, which
- * high friction hides (W1 at mu = 20: 1.861 instead of 0.686; doc/seqlp.md
- * 16).  -1 with err set when the system cannot be made. */
+/* Sets the friction of the search, and the system its stress states
+ * come from, at turn 0 (start 0) with every joint's own friction (rigid
+ * ones at BL_SEQLP_MU_RIGID), at turn k > 0 (the restarts' k-th
+ * friction) at the k-th of BL_SEQLP_MU_TRIED in turn, rigid joints at it
+ * and others at most at it: a low friction lets the search find
+ * mechanisms that open as they slide, which high friction hides (W1 at
+ * mu = 20: 1.861 instead of 0.686; doc/seqlp.md 16).  -1 with err set
+ * when the system cannot be made. */
 static int search_friction(run *r, int k, bl_error *err)
 {
     static const double tried[] = BL_SEQLP_MU_TRIED;
@@ -960,22 +961,28 @@ static int search_start(run *r, const bl_seqlp_options *o, bl_solution *s, bl_lp
 
 /* Another admissible stress state (the seed's Eq. 22): maximize a random
  * c . x, c uniform in [0, 1), over equilibrium and the Coulomb cone (of
- * r->states) with alpha fixed; its normal forces seed the next start.
- * The seed draws these
- * states at the current alpha; the caller draws alpha uniformly below the
+ * r->states) with alpha fixed, or with least set minimize it; its normal
+ * forces seed the next start.  The seed draws these states at the
+ * current alpha and maximizes; the caller draws alpha uniformly below the
  * best so far instead, because on a stack-bond wall (3 columns of 12
  * blocks, mu = 5) states at the best alpha, 0.5714, never led elsewhere,
  * while states below it led to certified answers down to 0.2078 in 20
- * starts.  The LP status in *status; -1 (err set) when the LP cannot be
+ * starts; and every other restart minimizes, because the most loaded
+ * states load every joint and, at high friction, none of their sequences
+ * let a joint slide where it carries nothing: the mechanisms that rock
+ * while blocks part along joints, which the least loaded states leave
+ * unloaded (W4 at mu = 2 to 100: 0.3182 to 0.4571 in every one of six
+ * seeds, where the pier rocking at 0.2637 is a solution; doc/seqlp.md
+ * 17).  The LP status in *status; -1 (err set) when the LP cannot be
  * made. */
-static int random_state(run *r, double alpha, unsigned long long *rng,
+static int random_state(run *r, double alpha, int least, unsigned long long *rng,
                         const bl_seqlp_options *o, bl_lp_status *status, bl_error *err)
 {
     const bl_system *c = r->states;
     for (int j = 0; j < c->nforce; j++) {
         r->clo[j] = c->lo[j];
         r->chi[j] = c->hi[j];
-        r->obj[j] = uniform(rng);
+        r->obj[j] = least ? -uniform(rng) : uniform(rng);
     }
     r->clo[c->nforce] = r->chi[c->nforce] = alpha;
     r->obj[c->nforce] = 0.0;
@@ -1429,13 +1436,17 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                                : s->alpha_assoc;
         int lps0 = s->lps, its0 = s->iterations + r.iterations;
         double tk = bl_clock();
-        if (search_friction(&r, k, err)) goto fail;
+        /* restarts from stress states two at each friction, the most and
+         * the least loaded (random_state); retries of a model with rigid
+         * joints, which start as start 0 does, one at each */
+        int rigid_retry = retry && has_rigid(mc);
+        if (search_friction(&r, rigid_retry ? k : (k + 1) / 2, err)) goto fail;
         if (k == 0) {
             for (int p = 0; p < np; p++) r.n[p] = locked ? 0.0 : s->force[mc->dim * p] / r.fixed->W0;
             bl_lp_status st; /* (an LP that fails leaves the associative forces) */
             if (!locked && r.states != r.cone && search_start(&r, o, s, &st, err)) goto fail;
             if (path_answer(&pj, &r, s, err)) goto fail;
-        } else if (retry && has_rigid(mc) && r.states != r.cone) {
+        } else if (rigid_retry) {
             /* a retry with rigid joints: from the associative forces at
              * its own friction, as start 0 (4 x 12 dome at mu = inf
              * certified only so, doc/seqlp.md 16) */
@@ -1449,7 +1460,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             if (!isfinite(from)) break; /* no alpha to draw below */
             bl_lp_status st;
             double low = least <= from ? least : 0.0;
-            if (random_state(&r, low + uniform(&rng) * (from - low), &rng, o, &st, err)) goto fail;
+            if (random_state(&r, low + uniform(&rng) * (from - low), k % 2 == 0, &rng, o, &st, err))
+                goto fail;
             s->lps++;
             if (st != BL_LP_OPTIMAL) {
                 /* Ctrl-C and the time limit end the run; a state that
@@ -1476,27 +1488,32 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             first = ss;
             if (first.done == first.cap) memcpy(r.n_first, r.n, (size_t)np * sizeof *r.n);
             if (finite) rigid_answer(&r, &rl, s);
-            /* By default (starts < 0) 10 restarts when unlimited friction
-             * gives the associative alpha: start 0 then certifies the
+            /* By default (starts < 0) 20 restarts on small 2D models
+             * (BL_SEQLP_SEARCH_ROWS), where start 0 certified up to 21 %
+             * above the lowest of 10 restarts (W4 and W5 loaded the other
+             * way) and 20 restarts take about half a second, and on 3D
+             * models as small (BL_SEQLP_SEARCH_COLUMNS3), where one start
+             * certified two unbonded leaves 11 % above their own
+             * overturning; on larger ones 10 when unlimited friction gives
+             * the associative alpha: start 0 then certifies the
              * associative answer, and restarts found lower ones in every
-             * case measured (doc/seqlp.md: W1, the stack-bond wall); and
-             * on small 2D models (BL_SEQLP_SEARCH_ROWS), where start 0
-             * certified up to 21 % above the lowest of 10 restarts (W4 and
-             * W5 loaded the other way) and 10 restarts take about half a
-             * second; on 3D models as small (BL_SEQLP_SEARCH_COLUMNS3),
-             * where one start certified two unbonded leaves 11 % above
-             * their own overturning; else restarts only while none has certified
+             * case measured (doc/seqlp.md: W1, the stack-bond wall); else
+             * restarts only while none has certified
              * (BL_SEQLP_RETRIES).  Start 0 certifying the associative
              * alpha searches too, whatever unlimited friction gives: a
              * 104-block wall at mu = 1.2 certified its associative 1.0276
              * (unlimited friction: 3.69), where 3 restarts found 0.3809. */
             int at_assoc = r.found && r.best_alpha >= s->alpha_assoc - o->settle * fabs(s->alpha_assoc);
-            int search = s->assoc_is_solution || at_assoc ||
-                         (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS) ||
-                         (mc->dim == 3 && r.fixed->ncols <= BL_SEQLP_SEARCH_COLUMNS3);
+            int small = (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS) ||
+                        (mc->dim == 3 && r.fixed->ncols <= BL_SEQLP_SEARCH_COLUMNS3);
+            int search = s->assoc_is_solution || at_assoc || small;
             retry = sliding && o->starts < 0 && !search && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
-            starts = !sliding ? 0 : o->starts >= 0 ? o->starts : search ? BL_SEQLP_SEARCH
-                                                     : retry ? BL_SEQLP_RETRIES : 0;
+            starts = !sliding          ? 0
+                     : o->starts >= 0  ? o->starts
+                     : small           ? BL_SEQLP_SEARCH_SMALL
+                     : search          ? BL_SEQLP_SEARCH
+                     : retry           ? BL_SEQLP_RETRIES
+                                       : 0;
         }
     }
 
