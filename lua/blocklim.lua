@@ -9,8 +9,8 @@ return function(core)
 
   -- Results get the report metatable: print(r), r:svg(file), r:png(file).
   local solve = methods.solve
-  function methods.solve(m, t)
-    local r = solve(m, t)
+  function methods.solve(m, t, note)
+    local r = solve(m, t, note)
     return report.wrap(r)
   end
   -- stats() prints as one line at the prompt.

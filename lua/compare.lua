@@ -116,17 +116,16 @@ return function(M)
         if fields[k] == nil and takes(fields.method, fields.flow or common.flow, k) then fields[k] = v end
       end
       if fields.method == "assoc" and fields.flow == nil then fields.flow = "associative" end
-      local ok, r = pcall(m.solve, m, fields)
-      if not ok and tostring(r):find("interrupted", 1, true) then
-        -- Ctrl-C: say what the rows before it found, and where this one is
-        local done = {}
-        for j = 1, i - 1 do
-          done[#done + 1] = ("%s %s"):format(rows[j].label, rows[j].result.alpha == rows[j].result.alpha
-            and ("%.6g"):format(rows[j].result.alpha) or rows[j].result.status)
-        end
-        fail(("interrupted (Ctrl-C) in methods[%d] (%s)%s; last() holds what that row had found")
-             :format(i, label_of(entry), #done > 0 and "; finished: " .. table.concat(done, ", ") or ""))
+      -- Ctrl-C stops the solve with its own message, which ends with this
+      -- row and what the rows before it found
+      local done = {}
+      for j = 1, i - 1 do
+        done[#done + 1] = ("%s %s"):format(rows[j].label, rows[j].result.alpha == rows[j].result.alpha
+          and ("%.6g"):format(rows[j].result.alpha) or rows[j].result.status)
       end
+      local note = ("in compare{}, methods[%d] (%s)%s"):format(i, label_of(entry),
+        #done > 0 and "; finished: " .. table.concat(done, ", ") or "")
+      local ok, r = pcall(m.solve, m, fields, note)
       if not ok then
         -- a field given to compare{} itself that solve{} does not know is
         -- compare{}'s own mistake, not the row's

@@ -1255,6 +1255,27 @@ static void on_sigint(int sig)
         previous_sigint.sa_handler(sig);
 }
 
+/* Raises the error of a solve stopped by Ctrl-C, its message ending with
+ * the caller's note (compare{} names its row), and leaves that message in
+ * the registry (BL_LUA_INTERRUPTED). */
+static int interrupted(lua_State *L, const char *note, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static int interrupted(lua_State *L, const char *note, const char *fmt, ...)
+{
+    char msg[1200];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (*note) lua_pushfstring(L, "%s (%s)", msg, note);
+    else lua_pushstring(L, msg);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, LUA_REGISTRYINDEX, BL_LUA_INTERRUPTED);
+    return lua_error(L);
+}
+
+/* m:solve(t[, note]): note, a string, ends the message of an interruption
+ * (compare{}'s row). */
 static int model_solve(lua_State *L)
 {
     static const char *const fields[] = {
@@ -1269,6 +1290,9 @@ static int model_solve(lua_State *L)
     static const char *const starts_from[] = {"cold", "assoc", "seqlp", NULL};
     enum { ASSOC, SEQLP, MPEC };
     bl_model *m = check_model(L, 1);
+    char note[400] = "";
+    if (!lua_isnoneornil(L, 3)) snprintf(note, sizeof note, "%s", luaL_checkstring(L, 3));
+    lua_settop(L, 2);
     opt_table(L, 2);
     check_fields(L, 2, "solve", fields, 0);
     /* By default, the non-associative answer (the associative one beside
@@ -1405,6 +1429,8 @@ static int model_solve(lua_State *L)
     sa.sa_handler = on_sigint;
     sigemptyset(&sa.sa_mask);
     bl_interrupt_clear();
+    lua_pushnil(L);
+    lua_setfield(L, LUA_REGISTRYINDEX, BL_LUA_INTERRUPTED);
     sigaction(SIGINT, &sa, &old);
     previous_sigint = old;
     so.base = o;
@@ -1427,7 +1453,7 @@ static int model_solve(lua_State *L)
     if (rc) return fail(L, "%s", err.msg);
     const bl_solution *s = *box;
     if (s->status == BL_INTERRUPTED && !s->interrupted)
-        return fail(L, "solve: interrupted (Ctrl-C); the model is as it was");
+        return interrupted(L, note, "solve: interrupted (Ctrl-C); the model is as it was");
     push_result(L, s, sidx, 0);
     if (*dead) {
         push_result(L, *dead, sidx - 1, 1);
@@ -1439,13 +1465,13 @@ static int model_solve(lua_State *L)
      * is kept for last(). */
     if (s->interrupted) {
         if (strcmp(s->method, "mpec") == 0)
-            return fail(L, "solve: interrupted (Ctrl-C) in Ipopt; its start's verified alpha, %.6g, "
-                           "is in last()", s->alpha);
+            return interrupted(L, note, "solve: interrupted (Ctrl-C) in Ipopt; its start's verified "
+                                        "alpha, %.6g, is in last()", s->alpha);
         if (s->certified)
-            return fail(L, "solve: interrupted (Ctrl-C) after %d LPs; the lowest certified alpha "
-                           "so far, %.6g, is in last()", s->lps, s->alpha);
-        return fail(L, "solve: interrupted (Ctrl-C) after %d LP%s, nothing certified yet; "
-                       "the history is in last()", s->lps, s->lps == 1 ? "" : "s");
+            return interrupted(L, note, "solve: interrupted (Ctrl-C) after %d LPs; the lowest "
+                                        "certified alpha so far, %.6g, is in last()", s->lps, s->alpha);
+        return interrupted(L, note, "solve: interrupted (Ctrl-C) after %d LP%s, nothing certified "
+                                    "yet; the history is in last()", s->lps, s->lps == 1 ? "" : "s");
     }
     return 1;
 }

@@ -23,6 +23,7 @@
 #include <lualib.h>
 
 #include "error.h"
+#include "lua_bindings.h"
 
 #ifndef BLOCKLIM_VERSION
 #define BLOCKLIM_VERSION "0.1"
@@ -125,6 +126,15 @@ static void stop_hook(lua_State *L, lua_Debug *ar)
         lua_pop(L, 1);
         if (handler) return;
     }
+    /* Where Lua code caught that error (compare{}, a command's guard), it
+     * stops with the same message. */
+    lua_getfield(L, LUA_REGISTRYINDEX, BL_LUA_INTERRUPTED);
+    if (lua_type(L, -1) == LUA_TSTRING) {
+        lua_pushnil(L);
+        lua_setfield(L, LUA_REGISTRYINDEX, BL_LUA_INTERRUPTED);
+        lua_error(L);
+    }
+    lua_pop(L, 1);
     luaL_error(L, "interrupted!");
 }
 
@@ -165,6 +175,8 @@ static int docall(lua_State *L, int narg, int nres)
     lua_insert(L, base);
     globalL = L;
     bl_interrupt_clear();
+    lua_pushnil(L);
+    lua_setfield(L, LUA_REGISTRYINDEX, BL_LUA_INTERRUPTED);
     set_sigint(on_sigint);
     status = lua_pcall(L, narg, nres, base);
     set_sigint(SIG_DFL);

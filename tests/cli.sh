@@ -188,6 +188,21 @@ LUA
   check "Ctrl-C during the sequence that starts Ipopt keeps the sequence's certified answer" \
     grep -qE 'kept[[:space:]]+true[[:space:]]+seqlp[[:space:]]+true[[:space:]]+true[[:space:]]+true' <<<"$screen"
 
+  # Ctrl-C during compare{}: the row's solve says what it had found, and
+  # the message names the row and what the rows before it found
+  interrupt "$tmp/w4.lua" "c = compare{ methods = { 'assoc', { method = 'seqlp', starts = 1000000 } } }" 2 \
+    'print("compare gone", c == nil, last().interrupted)'
+  check "Ctrl-C during compare{} names the row and the rows finished before it" \
+    grep -q 'interrupted (Ctrl-C) after .* (in compare{}, methods\[2\] (seqlp); finished: assoc 0.331948)' <<<"$screen"
+  check "... and last() holds the interrupted row" \
+    grep -qE 'compare gone[[:space:]]+true[[:space:]]+true' <<<"$screen"
+  # Ctrl-C in a solve that Lua code catches with pcall still stops the
+  # chunk, with the solve's own message
+  interrupt "$tmp/w4.lua" "for i = 1, 3 do print('caught', i, pcall(solve, { starts = 1000000 })) end" 2 \
+    'print("after", 1 + 1)'
+  check "Ctrl-C in a solve under pcall stops the chunk with the solve's message" \
+    bash -c 'grep -q "^solve: interrupted (Ctrl-C) after" <<<"$1" && ! grep -q "^caught" <<<"$1" && grep -qE "^after[[:space:]]+2" <<<"$1"' _ "$screen"
+
   # Ctrl-C during the path that starts the sequence of LPs (a 3,630-block
   # wall, where the path runs for seconds beside the associative LP): the
   # whole solve stops, not just the path; before the associative LP has
