@@ -49,7 +49,7 @@ function Result.__tostring(r)
     say("  the dead load alone has no equilibrium (the model carries %s); r.dead, the", most)
     say("  solve with the dead load as the live load, shows how it fails: r.dead:png(file)")
   end
-  if r.alpha_assoc then
+  if r.alpha_assoc and r.method == "seqlp" then
     local last = r.certified and not r.interrupted and not r.time_up and ", the last one its certificate" or ""
     if r.none_dilates then
       say("  no joint has friction, so none dilates: the associative answer is the")
@@ -177,6 +177,7 @@ function Result.__tostring(r)
         r.flow, i.status, r.iterations, size.rows, size.columns)
     say("  complementarity by %s, started from %s%s; sum of products %s", i.complementarity,
         i.start, #why > 0 and " (" .. table.concat(why, "; ") .. ")" or "", g(i.pairs))
+    if r.alpha_assoc then say("  associative alpha = %.6g", r.alpha_assoc) end
     if i.kept_start and (i.status == "solved" or i.status == "solved to acceptable level") then
       say("  Ipopt's point (alpha %.6g) is not a lower verified answer: the start's certified", i.alpha)
       say("  answer stands")

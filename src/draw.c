@@ -318,7 +318,7 @@ static void load_point(const pic *P, const bl_point_load *pl, int move, bl_vec2 
 static void extent(pic *P, double box[4])
 {
     const bl_model *m = P->m;
-    P->maxd = P->s->has_mechanism && P->s->u ? max_speed(P->s) : 0.0;
+    P->maxd = bl_solution_moves(P->s) ? max_speed(P->s) : 0.0;
     double size = bl_model_size(m);
     P->k = P->maxd > 0.0 && size > 0.0 ? SHOW_FRACTION * size / P->maxd : 0.0;
     box[0] = box[1] = INFINITY;

@@ -1047,14 +1047,18 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
             set_boolean(L, "rigid_joints", 1); /* some joint has mu = inf */
             break;
         }
-    if (strcmp(s->method, "seqlp") == 0) {
+    int seq = strcmp(s->method, "seqlp") == 0, ipopt = strcmp(s->method, "mpec") == 0;
+    if (seq || (ipopt && strcmp(s->flow, "nonassociative") == 0))
         set_number(L, "alpha_assoc", s->alpha_assoc);
-        set_number(L, "alpha_rigid", s->alpha_rigid);
-        if (s->certified) set_number(L, "alpha_settled", s->alpha_settled);
-        set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
+    if (seq || ipopt) {
         set_boolean(L, "certified", s->certified);
         set_boolean(L, "interrupted", s->interrupted);
         set_boolean(L, "time_up", s->time_up);
+    }
+    if (seq) {
+        set_number(L, "alpha_rigid", s->alpha_rigid);
+        if (s->certified) set_number(L, "alpha_settled", s->alpha_settled);
+        set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
         if (s->live_scales_dead) set_boolean(L, "live_scales_dead", 1);
         if (s->none_dilates) set_boolean(L, "none_dilates", 1);
         set_integer(L, "lps", s->lps);
@@ -1103,7 +1107,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
             lua_setfield(L, -2, "note");
         }
     }
-    if (strcmp(s->method, "mpec") == 0) {
+    if (ipopt) {
         lua_createtable(L, 0, 7);
         set_string(L, "status", s->nlp_status);
         set_string(L, "complementarity", s->comp);
@@ -1159,6 +1163,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
         set_number(L, "dilatancy", s->res.dilatancy);
     }
     lua_setfield(L, -2, "residuals");
+    if (!bl_solution_moves(s)) return; /* Ipopt's last point, no answer: its residuals only */
 
     push_details(L, s);
     lua_setfield(L, -3, "interfaces");

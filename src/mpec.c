@@ -728,6 +728,9 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
         start_why = "the associative LP is unbounded";
     }
     int cold = o->start == BL_MPEC_START_COLD;
+    /* the associative answer beside the non-associative one: the
+     * sequence's, or the associative start's own (a cold start's too) */
+    if (strcmp(start_kind, "seqlp") != 0) s->alpha_assoc = s->alpha;
     /* Ctrl-C during the start: its result is the answer, as the start's
      * (a sequence stopped by it keeps what it certified, and says so) */
     if (s->status == BL_INTERRUPTED || s->interrupted) {
@@ -824,6 +827,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     s->lp = "ipopt";
     s->factor_nnz = 0.0;
     s->certified = 0;
+    s->time_up = 0;
     s->slip = o->seq.slip;
     s->alpha_ipopt = v[0];
     s->kept_start = 0;
@@ -839,6 +843,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     if (v0 && converged && (!s->verified || s->alpha > alpha_start || (stands == 1 && s->alpha < 0.0))) {
         answer_from(s, v0, &l, c, f, nonassoc, o, xa);
         s->kept_start = 1;
+        s->certified = nonassoc && s->verified; /* the sequence's certified answer */
         s->stands = stands; /* (penalty 0.5: Ipopt at -0.5 called a pier unstable) */
         if (s->verified) bl_solution_answer_status(s);
         else s->status = BL_NOT_COMPLEMENTARY;
@@ -853,7 +858,9 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
         s->stands = stands;
         if (s->verified) {
             bl_solution_answer_status(s);
+            s->certified = nonassoc;
             s->interrupted = why == BL_INTERRUPTED; /* Ctrl-C: kept for last() */
+            s->time_up = why == BL_TIME_LIMIT;
         } else {
             s->status = why;
             answer_from(s, v, &l, c, f, nonassoc, o, xa);

@@ -152,6 +152,11 @@ bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec
     return bl_v2(d.x, d.y);
 }
 
+int bl_solution_moves(const bl_solution *s)
+{
+    return s->has_mechanism && s->u && (s->status == BL_OPTIMAL || s->status == BL_UNSTABLE);
+}
+
 double bl_solution_block_speed(const bl_solution *s, int b)
 {
     const bl_block *B = &s->model->blocks[b];

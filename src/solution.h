@@ -180,6 +180,11 @@ bl_vec2 bl_solution_relative_velocity(const bl_solution *s, int a, int b, bl_vec
 /* The largest speed of a vertex of block b in the mechanism u. */
 double bl_solution_block_speed(const bl_solution *s, int b);
 
+/* Whether s has a mechanism to show: an answer (optimal or unstable) with
+ * its velocities.  Ipopt's last point that is no answer ("not
+ * complementary", a limit) keeps its residuals, not a mechanism. */
+int bl_solution_moves(const bl_solution *s);
+
 /* A free block whose fastest vertex moves at less than this share of the
  * fastest block's is still: drawn pale, and outside the moving chain of
  * bl_solution_participation. */

@@ -62,7 +62,7 @@ int bl_write_vtk(const bl_solution *s, const char *file, bl_error *err)
 
     /* per cell: what it is, its block (faces) or blocks (interfaces), the
      * block's velocity and rotation, the interface's state and forces */
-    int mech = s->has_mechanism;
+    int mech = bl_solution_moves(s);
     fprintf(f, "CELL_DATA %d\nSCALARS kind int 1\nLOOKUP_TABLE default\n", ncells);
     for (int b = 0; b < m->nblocks; b++)
         for (int k = 0; k < m->blocks[b].solid.nf; k++) fprintf(f, "%d\n", m->blocks[b].support);

@@ -232,6 +232,32 @@ do
   T.ok(r.status == "not complementary" and r.alpha ~= r.alpha and r.ipopt.alpha == r.ipopt.alpha,
        "mpec, cold start: 'not complementary' has alpha NaN, Ipopt's alpha kept in r.ipopt.alpha",
        ("%s %s %s"):format(r.status, tostring(r.alpha), tostring(r.ipopt.alpha)))
+  -- ... its residuals show by how much it misses (complementarity above
+  -- the slip threshold), and it has no mechanism to show or draw
+  T.ok(r.residuals and r.residuals.complementarity > r.slip and r.mechanism == nil
+       and r.interfaces == nil and r.states == nil and not tostring(r):find("closed", 1, true),
+       "mpec, 'not complementary': its residuals, no mechanism, interfaces or states")
+end
+-- The non-associative direct solve carries the associative answer beside
+-- its own, as the sequence does (the associative solve's alpha, 1e-7
+-- relative), from every start; and a start kept where Ipopt stopped at
+-- the time limit is the sequence's certified answer: certified, time_up.
+build(walls.W4)
+do
+  local assoc = solve { flow = "associative" }.alpha
+  for _, start in ipairs { "seqlp", "assoc", "cold" } do
+    local r = solve { method = "mpec", start = start }
+    T.near(r.alpha_assoc, assoc, 1e-7, ("W4, mpec from %s: alpha_assoc, the associative alpha"):format(start))
+    T.ok(r.certified == (start == "seqlp" and r.ipopt.kept_start) and r.time_up == false,
+         ("W4, mpec from %s: certified only with the sequence's answer kept, time_up false"):format(start))
+  end
+  local r = solve { method = "mpec", time_limit = 0.25 }
+  T.ok(r.status == "optimal" and r.ipopt.kept_start and r.certified and r.time_up
+       and math.abs(r.alpha - 0.26374) <= 0.00005,
+       "W4, mpec at a time limit that stops Ipopt: the sequence's certified 0.26374 kept, time_up",
+       ("%s %s %s %s"):format(r.status, tostring(r.ipopt.kept_start), tostring(r.time_up), tostring(r.alpha)))
+  T.eq(solve { method = "mpec", flow = "associative" }.alpha_assoc, nil,
+       "W4, mpec with the associative flow: no alpha_assoc beside its own answer")
 end
 -- Found by a tester (2026-11-28).  A pier 1 x 2 at mu = 0.6 (alpha =
 -- b/h = 0.5, rocking; it stands):
