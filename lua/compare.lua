@@ -49,13 +49,16 @@ return function(M)
   -- Whether a row of this method (and flow) takes the common field k: a
   -- method that solves one flow rule takes no other flow, only Ipopt takes
   -- its start and penalty, and a row of the associative flow none of the
-  -- sequence's settings (solve{} refuses each of them).
+  -- sequence's settings, nor a cold start of Ipopt, which runs no sequence
+  -- (solve{} refuses each of them).
   local seq_only = { starts = true, seed = true, nearest = true, path = true, beta = true, settle = true,
                      slip = true, lps = true }
   local mpec_only = { start = true, penalty = true, complementarity = true }
-  local function takes(method, flow, k)
+  local function takes(method, flow, start, k)
     if k == "flow" then return method ~= "assoc" and method ~= "seqlp" end
     if mpec_only[k] then return method == "mpec" end
+    -- a cold start runs no sequence (slip still judges Ipopt's answer)
+    if method == "mpec" and start == "cold" and seq_only[k] and k ~= "slip" then return false end
     -- the flow the row solves: its method's own, else the one given
     if method == "assoc" then flow = "associative" elseif method == "seqlp" then flow = "nonassociative" end
     if seq_only[k] then return flow ~= "associative" end
@@ -113,7 +116,9 @@ return function(M)
         fail(("methods[%d] must be a method name or a table, got %s"):format(i, type(entry)))
       end
       for k, v in pairs(common) do
-        if fields[k] == nil and takes(fields.method, fields.flow or common.flow, k) then fields[k] = v end
+        if fields[k] == nil and takes(fields.method, fields.flow or common.flow, fields.start or common.start, k) then
+          fields[k] = v
+        end
       end
       if fields.method == "assoc" and fields.flow == nil then fields.flow = "associative" end
       -- Ctrl-C stops the solve with its own message, which ends with this

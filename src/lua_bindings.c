@@ -1369,6 +1369,16 @@ static int model_solve(lua_State *L)
             if (field_given(L, 2, seq[k]))
                 fail(L, "solve: field '%s' goes with flow = \"nonassociative\" (the sequence of LPs)", seq[k]);
     }
+    if (method == MPEC && mo.start == BL_MPEC_START_COLD) {
+        /* nor a cold start, which runs no sequence (slip still judges
+         * Ipopt's answer) */
+        static const char *const seq[] = {"starts", "seed", "nearest", "path", "beta", "settle", "lps",
+                                          NULL};
+        for (int k = 0; seq[k]; k++)
+            if (field_given(L, 2, seq[k]))
+                fail(L, "solve: field '%s' goes with the sequence of LPs, which start = \"cold\" does not run",
+                     seq[k]);
+    }
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;
     bl_solve_options_default(&o);

@@ -187,6 +187,10 @@ local bad = {
     "field 'beta' goes with flow = \"nonassociative\"" },
   { "solve", function() solve { method = "mpec", flow = "associative", starts = 3 } end, "solve",
     "field 'starts' goes with flow" },
+  -- ... and with Ipopt's cold start, which runs no sequence (they were
+  -- ignored); slip, which judges Ipopt's answer, is taken
+  { "solve", function() solve { method = "mpec", start = "cold", seed = 3 } end, "solve",
+    "field 'seed' goes with the sequence of LPs, which start = \"cold\" does not run" },
   { "arch", function() arch { n = 5, thickness = 0.1 } end, "arch", "'radius'" },
   { "arch", function() arch { n = 5, radius = 1, thickness = -0.1 } end, "arch", "'thickness'" },
   -- a string is no number, here as in every other field ("5" read as 5,

@@ -323,4 +323,16 @@ for _, mu in ipairs { math.huge, 0 } do
        ("seqlp at mu = %g everywhere: min(mu, b/h), certified%s"):format(mu, mu > 0 and "" or ", no sequence"),
        ("%s %s %d LPs"):format(r.status, tostring(r.alpha), r.lps))
 end
+-- compare{} gives the sequence's settings to the rows that run a
+-- sequence, not to Ipopt's cold start (solve{} refuses them there), and
+-- slip to both: a pier 1 x 2, mu = 0.6, b/h = 0.5 by each row.
+model { mu = 0.6 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 2 }, { 0, 2 } } }
+block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+local ok, cc = pcall(compare, { methods = { "seqlp", { method = "mpec", start = "cold" } }, seed = 2,
+                               slip = 1e-5, progress = false })
+T.ok(ok and math.abs(cc.rows[1].result.alpha - 0.5) <= 1e-7 and math.abs(cc.rows[2].result.alpha - 0.5) <= 1e-6
+     and cc.rows[2].result.slip == 1e-5,
+     "compare{} with seed: the cold start's row runs without it, slip reaches both, alpha = b/h",
+     ok and ("%s %s"):format(tostring(cc.rows[1].result.alpha), tostring(cc.rows[2].result.alpha)) or tostring(cc))
 T.done()
