@@ -177,7 +177,9 @@ function Result.__tostring(r)
         r.flow, i.status, r.iterations, size.rows, size.columns)
     say("  complementarity by %s, started from %s%s; sum of products %s", i.complementarity,
         i.start, #why > 0 and " (" .. table.concat(why, "; ") .. ")" or "", g(i.pairs))
-    if r.alpha_assoc then say("  associative alpha = %.6g", r.alpha_assoc) end
+    if r.alpha_assoc and math.abs(r.alpha_assoc) < math.huge then
+      say("  associative alpha = %.6g", r.alpha_assoc)
+    end
     if i.kept_start and (i.status == "solved" or i.status == "solved to acceptable level") then
       say("  Ipopt's point (alpha %.6g) is not a lower verified answer: the start's certified", i.alpha)
       say("  answer stands")

@@ -1360,24 +1360,18 @@ static int model_solve(lua_State *L)
     so.progress = boolean_field(L, 2, "solve", "progress", isatty(STDERR_FILENO));
     so.path = field_given(L, 2, "path") ? boolean_field(L, 2, "solve", "path", 0) : -1;
     so.when_sliding = !field_given(L, 2, "method") && !field_given(L, 2, "flow");
-    if (!flow && mo.start != BL_MPEC_START_SEQLP) {
-        /* the sequence's settings, which an associative answer never uses
-         * (but Ipopt's start from the sequence does) */
-        static const char *const seq[] = {"starts", "seed", "nearest", "path", "beta", "settle",
-                                          "slip", "lps", NULL};
-        for (int k = 0; seq[k]; k++)
-            if (field_given(L, 2, seq[k]))
-                fail(L, "solve: field '%s' goes with flow = \"nonassociative\" (the sequence of LPs)", seq[k]);
-    }
-    if (method == MPEC && mo.start == BL_MPEC_START_COLD) {
-        /* nor a cold start, which runs no sequence (slip still judges
-         * Ipopt's answer) */
-        static const char *const seq[] = {"starts", "seed", "nearest", "path", "beta", "settle", "lps",
-                                          NULL};
-        for (int k = 0; seq[k]; k++)
-            if (field_given(L, 2, seq[k]))
-                fail(L, "solve: field '%s' goes with the sequence of LPs, which start = \"cold\" does not run",
-                     seq[k]);
+    /* The sequence's settings, which an associative answer never uses (but
+     * Ipopt's start from the sequence does), nor Ipopt's cold start, which
+     * runs no sequence (slip, last, still judges Ipopt's answer). */
+    static const char *const seq[] = {"starts", "seed", "nearest", "path", "beta", "settle", "lps",
+                                      "slip", NULL};
+    for (int k = 0; seq[k]; k++) {
+        if (!field_given(L, 2, seq[k])) continue;
+        if (!flow && mo.start != BL_MPEC_START_SEQLP)
+            fail(L, "solve: field '%s' goes with flow = \"nonassociative\" (the sequence of LPs)", seq[k]);
+        if (method == MPEC && mo.start == BL_MPEC_START_COLD && strcmp(seq[k], "slip") != 0)
+            fail(L, "solve: field '%s' goes with the sequence of LPs, which start = \"cold\" does not run",
+                 seq[k]);
     }
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;

@@ -117,17 +117,17 @@ static int msghandler(lua_State *L)
  * the next call, return, line or instruction. */
 static void stop_hook(lua_State *L, lua_Debug *ar)
 {
-    lua_sethook(L, NULL, 0, 0);
-    /* A C function that saw the flag (a solve) has already raised its own
-     * error; the hook then fires on the call of the message handler, and
-     * must let that message through. */
-    if (ar->event == LUA_HOOKCALL && lua_getinfo(L, "f", ar)) {
-        int handler = lua_tocfunction(L, -1) == msghandler;
-        lua_pop(L, 1);
-        if (handler) return;
+    /* Not at a call: a C function that saw the flag (a solve) has already
+     * raised its own error, and the call may be of a message handler (the
+     * prompt's, or xpcall's), which must run; at the next instruction
+     * instead. */
+    if (ar->event == LUA_HOOKCALL) {
+        lua_sethook(L, stop_hook, LUA_MASKLINE | LUA_MASKCOUNT, 1);
+        return;
     }
-    /* Where Lua code caught that error (compare{}, a command's guard), it
-     * stops with the same message. */
+    lua_sethook(L, NULL, 0, 0);
+    /* Where Lua code caught that error (compare{}, a command's guard, a
+     * pcall or xpcall of the user's), it stops with the same message. */
     lua_getfield(L, LUA_REGISTRYINDEX, BL_LUA_INTERRUPTED);
     if (lua_type(L, -1) == LUA_TSTRING) {
         lua_pushnil(L);

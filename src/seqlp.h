@@ -60,7 +60,8 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * against 4 (doc/seqlp.md 17).  Larger
  * models get BL_SEQLP_SEARCH where start 0 certified the associative
  * answer or unlimited friction gives it (seqlp.c).  Up to
- * BL_SEQLP_SEARCH_ROWS rows (W4 165, W5 183) 10 restarts took 0.4-0.7 s;
+ * BL_SEQLP_SEARCH_ROWS rows (W4 165, W5 183) 10 restarts took 0.4-0.7 s
+ * (20 of both kinds: 0.3-0.4 s at mu = 0.65, up to 2.8 s at mu = 100);
  * a 95-block wall of 315 rows took 3.2 s against 0.2 s.  3D models, whose
  * pyramids make LPs of many more columns per row, search up to
  * BL_SEQLP_SEARCH_COLUMNS3 columns (a few blocks: two unbonded leaves of

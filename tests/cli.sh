@@ -202,6 +202,11 @@ LUA
     'print("after", 1 + 1)'
   check "Ctrl-C in a solve under pcall stops the chunk with the solve's message" \
     bash -c 'grep -q "^solve: interrupted (Ctrl-C) after" <<<"$1" && ! grep -q "^caught" <<<"$1" && grep -qE "^after[[:space:]]+2" <<<"$1"' _ "$screen"
+  # ... and under xpcall, whose message handler runs first
+  interrupt "$tmp/w4.lua" "for i = 1, 3 do print('caught', i, xpcall(solve, debug.traceback, { starts = 1000000 })) end" 2 \
+    'print("after", 1 + 1)'
+  check "Ctrl-C in a solve under xpcall with a traceback stops the chunk too" \
+    bash -c 'grep -q "^solve: interrupted (Ctrl-C) after" <<<"$1" && ! grep -q "^caught" <<<"$1" && grep -qE "^after[[:space:]]+2" <<<"$1"' _ "$screen"
 
   # Ctrl-C during the path that starts the sequence of LPs (a 3,630-block
   # wall, where the path runs for seconds beside the associative LP): the

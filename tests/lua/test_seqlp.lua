@@ -169,9 +169,9 @@ end
 -- 0.57143 equals the unlimited-friction one and is itself a solution of
 -- Eq. 12, but one column overturning alone, b/H = 0.4/2.1 = 0.19048, is
 -- admissible without dilatancy: restarts from other stress states find it.
--- They are random: over seeds 1-20, 20 starts found it with 14 seeds and
--- 10 starts with 9 (the others 0.20779, 0.22857 or 0.25397; doc/seqlp.md
--- 17); seed 3 is one of the 14.
+-- They are random: over seeds 1-20, 20 starts found it with 18 seeds and
+-- 10 starts with 15 (the others 0.20779; doc/seqlp.md 17); seed 3 is one
+-- of the 18.
 local function stack(starts, seed)
   model { mu = 5 }
   local c = {}
@@ -215,7 +215,7 @@ T.ok(r.assoc_is_solution, "W1, mu = 5: the associative answer is itself a soluti
 r = solve { flow = "nonassociative" }
 -- (a restart whose stress state has no equilibrium at the search's
 -- friction, 1 here, is skipped: 19 of the 20 ran)
-T.ok(r.certified and r.verified and r.alpha <= 2 / 1.05 and #r.history == #r.starts and #r.starts >= 16,
+T.ok(r.certified and r.verified and r.alpha <= 2 / 1.05 and #r.starts >= 19,
      "W1, mu = 5, default: 20 restarts, a certified answer no higher",
      ("%.5f, %d starts"):format(r.alpha, #r.starts))
 -- W4's mechanism at mu = 0.65 (0.26374, published) is its right pier
