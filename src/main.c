@@ -114,7 +114,7 @@ static int msghandler(lua_State *L)
 /* ---- interruption ------------------------------------------------------ */
 
 /* Hook armed by the SIGINT handler: stops running Lua code with an error at
- * the next call, return, line or instruction. */
+ * the next return, line or instruction (past a call, below). */
 static void stop_hook(lua_State *L, lua_Debug *ar)
 {
     /* Not at a call: a C function that saw the flag (a solve) has already
