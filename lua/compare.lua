@@ -206,6 +206,7 @@ return function(M)
       -- differ in it
       local notes = {}
       if r.status == "unstable" then notes[#notes + 1] = "unstable" end
+      if not answered and #r.status > 10 then notes[#notes + 1] = r.status end
       if r.ipopt and r.ipopt.status == "not run" then
         notes[#notes + 1] = "Ipopt not run"
       elseif r.ipopt and r.ipopt.kept_start then
@@ -216,7 +217,7 @@ return function(M)
       if several and r.cone then notes[#notes + 1] = ("%d-facet %s pyramid"):format(r.cone.facets, r.cone.kind) end
       out[#out + 1] = ("%-22s %-6s %-10s %8.3f %8d %5s %8s %8s %8s %8s %-6s %7s %7s  %s"):format(
         row.label:sub(1, 22), r.flow == "associative" and "assoc" or "non-a",
-        answered and ("%.6f"):format(r.alpha) or r.status:sub(1, 10), r.timings.total,
+        answered and ("%.6f"):format(r.alpha) or #r.status > 10 and "-" or r.status, r.timings.total,
         r.iterations, r.method == "mpec" and "-" or tostring(r.lps or r.cone and r.cone.rounds or 1),
         g(e.equilibrium), g(e.yield), g(e.complementarity),
         g(flow_rule(e)), tostring(r.verified), row.agreement and ("%.4f"):format(row.agreement) or "-",

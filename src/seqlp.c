@@ -1493,7 +1493,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             /* By default (starts < 0) 20 restarts on small 2D models
              * (BL_SEQLP_SEARCH_ROWS), where start 0 certified up to 21 %
              * above the lowest of 10 restarts (W4 and W5 loaded the other
-             * way) and 20 restarts take about half a second, and on 3D
+             * way) and 20 restarts take 0.3-10 s, and on 3D
              * models as small (BL_SEQLP_SEARCH_COLUMNS3), where one start
              * certified two unbonded leaves 11 % above their own
              * overturning; on larger ones 10 when unlimited friction gives
@@ -1501,11 +1501,15 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
              * associative answer, and restarts found lower ones in every
              * case measured (doc/seqlp.md: W1, the stack-bond wall); else
              * restarts only while none has certified
-             * (BL_SEQLP_RETRIES).  Start 0 certifying the associative
+             * (BL_SEQLP_RETRIES).  Start 0 settling at the associative
              * alpha searches too, whatever unlimited friction gives: a
              * 104-block wall at mu = 1.2 certified its associative 1.0276
-             * (unlimited friction: 3.69), where 3 restarts found 0.3809. */
-            int at_assoc = r.found && r.best_alpha >= s->alpha_assoc - o->settle * fabs(s->alpha_assoc);
+             * (unlimited friction: 3.69), where 3 restarts found 0.3809.
+             * Settling, not certifying: the certificate's lowest alpha can
+             * lie below (a 105-block wall at mu = 5 settled at its
+             * associative 2.2200, certified 2.1963 and ran no restarts,
+             * which find 0.6079; doc/seqlp.md 17). */
+            int at_assoc = r.found && r.best_settled >= s->alpha_assoc - o->settle * fabs(s->alpha_assoc);
             int small = (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS) ||
                         (mc->dim == 3 && r.fixed->ncols <= BL_SEQLP_SEARCH_COLUMNS3);
             int search = s->assoc_is_solution || at_assoc || small;

@@ -225,6 +225,23 @@ T.ok(r.certified and r.verified and r.alpha <= 2 / 1.05 and #r.starts >= 19,
 -- maximize it load that joint and never did (0.3182-0.4571 over six seeds
 -- at mu = 2, 5, 100; with both, 17 of those 18 runs found it; doc/seqlp.md
 -- 17).
+-- A running-bond wall of 10 x 10 units (105 blocks, 315 rows: above the
+-- small models) at mu = 5: start 0 settles at the associative 2.2200 and
+-- certifies a little below it, 2.1963, which must count as the associative
+-- answer and start the 10 restarts: the corner of 20 blocks above the
+-- second course rocks about its toe (4.0, 0.35), the head joint beside the
+-- end half-block sliding open with nothing across it, at
+-- sum W (x_toe - x_c) / sum W (y_c - y_toe) = 0.626728 (a tester's hand
+-- calculation), a solution at every mu above its toe's T/N.
+do
+  model { mu = 5 }
+  wall { courses = walls.running_bond(10), unit = { 0.4, 0.175 } }
+  r = solve { progress = false }
+  T.ok(r.certified and r.verified and r.alpha <= 0.626728 + 1e-6 and #r.starts > 1,
+       "running bond 10 x 10, mu = 5, default: restarts after settling at the associative alpha, "
+       .. "alpha <= the corner's 0.626728", ("%.6f, %d starts, settled %.6f"):format(r.alpha, #r.starts,
+                                                                                   r.alpha_settled or 0 / 0))
+end
 for _, mu in ipairs { 2, 5, 100 } do
   model { name = "W4", mu = mu }
   wall { courses = walls.W4, unit = { 0.4, 0.175 } }
