@@ -1461,8 +1461,12 @@ static int model_solve(lua_State *L)
     sigaction(SIGINT, &old, NULL);
     if (rc) return fail(L, "%s", err.msg);
     const bl_solution *s = *box;
-    if (s->status == BL_INTERRUPTED && !s->interrupted)
+    if (s->status == BL_INTERRUPTED && !s->interrupted) {
+        /* nothing to keep: last() no longer returns an earlier solve */
+        lua_pushnil(L);
+        lua_setfield(L, LUA_REGISTRYINDEX, LAST_RESULT);
         return interrupted(L, note, "solve: interrupted (Ctrl-C); the model is as it was");
+    }
     push_result(L, s, sidx, 0);
     if (*dead) {
         push_result(L, *dead, sidx - 1, 1);
