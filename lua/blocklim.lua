@@ -86,7 +86,7 @@ return function(core)
 
   M.wall = require("blocklim.wall")(M)
   M.arch = require("blocklim.arch")(M, core.load_ratio)
-  require("blocklim.compare")(M)
+  require("blocklim.compare")(M, core.check_solve)
   require("blocklim.masonry")(M, require("blocklim.solid")(M))
   M.import = require("blocklim.import")(M)
 

@@ -8,7 +8,7 @@
 -- comparison: rows[i] has the result and how far its mechanism agrees with
 -- the first row's (doc/theory.md, "Comparing methods"); print(c) shows the
 -- table.
-return function(M)
+return function(M, check_solve)
   local Comparison = {}
   Comparison.__index = Comparison
 
@@ -100,7 +100,10 @@ return function(M)
       if k ~= "methods" then common[k] = v end
     end
 
-    local rows = {}
+    -- every row's fields, each checked as its solve would check them
+    -- before any row is solved (a mistake in the last row would otherwise
+    -- show only after the others had run)
+    local plans = {}
     for i, entry in ipairs(methods) do
       local fields = {}
       if type(entry) == "string" then
@@ -121,6 +124,21 @@ return function(M)
         end
       end
       if fields.method == "assoc" and fields.flow == nil then fields.flow = "associative" end
+      local ok, why = pcall(check_solve, m, fields)
+      if not ok then
+        -- a field given to compare{} itself that solve{} does not know is
+        -- compare{}'s own mistake, not the row's
+        local unknown = tostring(why):match("unknown field '([^']+)'")
+        if unknown and common[unknown] ~= nil and (type(entry) ~= "table" or entry[unknown] == nil) then
+          fail(("unknown field '%s' (compare{} takes 'methods' and the fields of solve{})"):format(unknown))
+        end
+        fail(("methods[%d] (%s): %s"):format(i, label_of(entry), tostring(why)))
+      end
+      plans[i] = fields
+    end
+
+    local rows = {}
+    for i, entry in ipairs(methods) do
       -- Ctrl-C stops the solve with its own message, which ends with this
       -- row and what the rows before it found
       local done = {}
@@ -130,16 +148,8 @@ return function(M)
       end
       local note = ("in compare{}, methods[%d] (%s)%s"):format(i, label_of(entry),
         #done > 0 and "; finished: " .. table.concat(done, ", ") or "")
-      local ok, r = pcall(m.solve, m, fields, note)
-      if not ok then
-        -- a field given to compare{} itself that solve{} does not know is
-        -- compare{}'s own mistake, not the row's
-        local unknown = tostring(r):match("unknown field '([^']+)'")
-        if unknown and common[unknown] ~= nil and (type(entry) ~= "table" or entry[unknown] == nil) then
-          fail(("unknown field '%s' (compare{} takes 'methods' and the fields of solve{})"):format(unknown))
-        end
-        fail(("methods[%d] (%s): %s"):format(i, label_of(entry), tostring(r)))
-      end
+      local ok, r = pcall(m.solve, m, plans[i], note)
+      if not ok then fail(("methods[%d] (%s): %s"):format(i, label_of(entry), tostring(r))) end
       rows[i] = { label = label_of(entry), result = r }
     end
 

@@ -1280,8 +1280,9 @@ static int interrupted(lua_State *L, const char *note, const char *fmt, ...)
 }
 
 /* m:solve(t[, note]): note, a string, ends the message of an interruption
- * (compare{}'s row). */
-static int model_solve(lua_State *L)
+ * (compare{}'s row).  With check set, only the checks of m and t, which
+ * refuse what the solve would (compare{} checks every row first). */
+static int solve_or_check(lua_State *L, int check)
 {
     static const char *const fields[] = {
         "flow",     "method", "lp",    "tolerance", "time_limit",      "iterations", "verbose",
@@ -1421,6 +1422,7 @@ static int model_solve(lua_State *L)
     if (m->nblocks == 0)
         fail(L, "solve: the model has no blocks; add them with %s",
              m->dim == 3 ? "box{}, extrude{}, wall{ depth }, dome{} or facade{}" : "block{}, wall{} or arch{}");
+    if (check) return 0;
 
     bl_solution **box = lua_newuserdatauv(L, sizeof *box, 0);
     *box = NULL;
@@ -1487,6 +1489,18 @@ static int model_solve(lua_State *L)
                                     "yet; the history is in last()", s->lps, s->lps == 1 ? "" : "s");
     }
     return 1;
+}
+
+static int model_solve(lua_State *L)
+{
+    return solve_or_check(L, 0);
+}
+
+/* core.check_solve(m, t): raises what m:solve(t) would refuse, and solves
+ * nothing. */
+static int core_check_solve(lua_State *L)
+{
+    return solve_or_check(L, 1);
 }
 
 /* core.last(): the result of the latest solve, also of one stopped by Ctrl-C. */
@@ -1584,7 +1598,7 @@ int luaopen_blocklim(lua_State *L)
     static const luaL_Reg core[] = {{"model", model_new}, {"draw", core_draw},
                                      {"clock", core_clock}, {"last", core_last}, {"vtk", core_vtk},
                                      {"blocks", core_blocks}, {"truncate", core_truncate},
-                                     {NULL, NULL}};
+                                     {"check_solve", core_check_solve}, {NULL, NULL}};
 
     if (luaL_newmetatable(L, MODEL_MT)) {
         lua_pushcfunction(L, model_gc);

@@ -427,4 +427,11 @@ T.eq(message(function() sliding:png("collapse.jpg") end),
 T.eq(message(function() solve { flow = "nonassociative", settle = 2 } end),
      "solve: field 'settle' must be in (0, 0.1] (the relative change of alpha between LPs below which it counts "
      .. "as settled), got 2", "solve{ settle = 2 }: refused (it was taken, and meant nothing)")
+-- compare{} checks every row before it solves any: a bad field in the last
+-- row is refused with no row solved (last() is still the solve before)
+local before = last()
+T.eq(message(function() compare { methods = { "mpec", { method = "seqlp", seed = -1 } } } end),
+     "compare: methods[2] (seqlp): solve: field 'seed' must be >= 0, got -1",
+     "compare{} with a bad field in its second row: refused naming the row")
+T.ok(last() == before, "... before the first row was solved")
 T.done()
