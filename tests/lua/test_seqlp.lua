@@ -115,9 +115,9 @@ T.ok(ok and r.status == "not certified",
      "W4 doubled (660 rows), lps = 3: 3 more starts while none certifies, then start 1 goes on",
      ("%d starts, %d rows, %s"):format(#r.starts, r.size.rows, r.status))
 -- A start that certifies within 10 % of the associative alpha ends the
--- search (W4 doubled certifies 19 % below it and searches, below): the
--- running bond of 16 x 16 (792 rows) certifies 0.5062, 3.9 % below its
--- associative 0.5268.
+-- search (W4 doubled at mu = 5 certifies 30 % below it and searches,
+-- below): the running bond of 16 x 16 (792 rows) certifies 0.5062, 3.9 %
+-- below its associative 0.5268.
 model { mu = 0.65 }
 wall { courses = walls.running_bond(16), unit = { 0.4, 0.175 } }
 r = solve { flow = "nonassociative", path = false }
@@ -276,8 +276,8 @@ do
       if math.abs(j.N) > 1e-9 * nmax or math.abs(j.T) > 1e-9 * nmax then loaded = loaded + 1 end
     end
   end
-  T.ok(low.certified and low.verified and loaded == 0,
-       "W4 doubled, mu = 0.65: certified, every sliding joint carries N = T = 0 (to 1e-9 of the largest N)",
+  T.ok(low.certified and low.verified and slid >= 1 and loaded == 0,
+       "W4 doubled, mu = 0.65: certified, slides, every sliding joint carries N = T = 0 (to 1e-9 of the largest N)",
        ("%.6f, %d sliding, %d loaded"):format(low.alpha, slid, loaded))
   model { mu = 5 }
   wall { courses = twice, unit = { 0.4, 0.175 } }
