@@ -1508,18 +1508,25 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
              * Settling, not certifying: the certificate's lowest alpha can
              * lie below (a 105-block wall at mu = 5 settled at its
              * associative 2.2200, certified 2.1963 and ran no restarts,
-             * which find 0.6079; doc/seqlp.md 17).  On 2D models up to
-             * BL_SEQLP_DROP_ROWS, also where start 0 certified more than
-             * BL_SEQLP_DROP below a finite associative alpha: sliding then
-             * decides the mechanism, and one start was up to 2.9 times
-             * the lowest answer found (doc/seqlp.md 18). */
+             * which find 0.6079; doc/seqlp.md 17).  Up to a size
+             * (BL_SEQLP_MARGIN_ROWS, BL_SEQLP_MARGIN_COLUMNS3), also where
+             * start 0 certified more than BL_SEQLP_MARGIN below a finite
+             * associative alpha (sliding then decides the mechanism), or
+             * the associative alpha is within it of unlimited friction's
+             * (friction hardly bounds it, and dilatancy hides sliding):
+             * one start was up to 2.9 times the lowest answer found
+             * (doc/seqlp.md 18). */
             int at_assoc = r.found && r.best_settled >= s->alpha_assoc - o->settle * fabs(s->alpha_assoc);
             int small = (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS) ||
                         (mc->dim == 3 && r.fixed->ncols <= BL_SEQLP_SEARCH_COLUMNS3);
-            int dropped = r.found && isfinite(s->alpha_assoc) && mc->dim == 2 &&
-                          r.fixed->nrows <= BL_SEQLP_DROP_ROWS &&
-                          r.best_alpha < s->alpha_assoc - BL_SEQLP_DROP * fabs(s->alpha_assoc);
-            int search = s->assoc_is_solution || at_assoc || small || dropped;
+            int medium = (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_MARGIN_ROWS) ||
+                         (mc->dim == 3 && r.fixed->ncols <= BL_SEQLP_MARGIN_COLUMNS3);
+            int dropped = isfinite(s->alpha_assoc) &&
+                          r.best_alpha < s->alpha_assoc - BL_SEQLP_MARGIN * fabs(s->alpha_assoc);
+            int near_rigid = isfinite(s->alpha_rigid) && !has_rigid(mc) &&
+                             s->alpha_assoc >= s->alpha_rigid - BL_SEQLP_MARGIN * fabs(s->alpha_rigid);
+            int search = s->assoc_is_solution || at_assoc || small ||
+                         (r.found && medium && (dropped || near_rigid));
             retry = sliding && o->starts < 0 && !search && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
             starts = !sliding          ? 0
                      : o->starts >= 0  ? o->starts

@@ -76,22 +76,25 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
 #define BL_SEQLP_SEARCH_COLUMNS3 1000
 #define BL_SEQLP_RETRY_ROWS 10000
 
-/* Larger 2D models get BL_SEQLP_SEARCH restarts too where start 0
- * certified more than BL_SEQLP_DROP below a finite associative alpha, up
- * to BL_SEQLP_DROP_ROWS rows: where dilatancy carries that much of the
- * associative answer, sliding decides the mechanism and one start's
- * answer was far from the lowest (W4 doubled each way at mu = 5, 660
- * rows: 0.4289 where 10 restarts certify 0.2307; a running bond of
- * 16 x 16 at mu = 5, 1.8951 where they certify 0.6462-0.6655), while where
- * one start came within 10 % of the associative alpha restarts moved the
- * answer by 0.5 % at most (doc/seqlp.md 18).  10 restarts took up to
- * 45 s on a running bond of 12 x 12 (450 rows) and 92-106 s on one of
- * 32 x 32 (3,120 rows) for 0.3-3.3 %, hence the bound.  Not in 3D, where
- * it was not measured, nor where the associative alpha is infinite
- * (a wall locked between abutments certifies its exact answer with one
- * start). */
-#define BL_SEQLP_DROP 0.1
-#define BL_SEQLP_DROP_ROWS 2000
+/* Models up to BL_SEQLP_MARGIN_ROWS rows in 2D and
+ * BL_SEQLP_MARGIN_COLUMNS3 columns in 3D get BL_SEQLP_SEARCH restarts too
+ * where start 0 certified more than BL_SEQLP_MARGIN below a finite
+ * associative alpha, or the associative alpha is within BL_SEQLP_MARGIN
+ * of unlimited friction's (no rigid joints).  Where dilatancy carries that
+ * much of the associative answer, or friction hardly bounds it, sliding
+ * that dilatancy hides decides the mechanism, and one start's answer was
+ * far from the lowest (W4 doubled each way at mu = 5, 660 rows: 0.4289
+ * where 10 restarts certify 0.2307; a running bond of 16 x 16 at mu = 5,
+ * 1.8951 where they certify 0.6462-0.6655; W1 one block thick in 3D at
+ * mu = 2, 1.7867 where they certify 0.8005), while where neither held
+ * restarts moved the answer by 0.5 % at most (doc/seqlp.md 18).  10
+ * restarts took up to 45 s on a running bond of 12 x 12 (450 rows) and
+ * 92-106 s on one of 32 x 32 (3,120 rows) for 0.3-3.3 %, hence the
+ * bounds.  Not where the associative alpha is infinite (a wall locked
+ * between abutments certifies its exact answer with one start). */
+#define BL_SEQLP_MARGIN 0.1
+#define BL_SEQLP_MARGIN_ROWS 2000
+#define BL_SEQLP_MARGIN_COLUMNS3 10000
 
 /* The friction at which a rigid joint (mu = inf) slides in start 0's
  * search, its fixed LPs and stress states (not in the certificates, which

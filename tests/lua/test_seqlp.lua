@@ -117,13 +117,16 @@ T.ok(ok and r.status == "not certified",
 -- A start that certifies within 10 % of the associative alpha ends the
 -- search (W4 doubled at mu = 5 certifies 30 % below it and searches,
 -- below): the running bond of 16 x 16 (792 rows) certifies 0.5062, 3.9 %
--- below its associative 0.5268.
+-- below its associative 0.5268, which friction bounds (unlimited friction:
+-- 2.2857).
 model { mu = 0.65 }
 wall { courses = walls.running_bond(16), unit = { 0.4, 0.175 } }
 r = solve { flow = "nonassociative", path = false }
-T.ok(#r.starts == 1 and r.certified and r.alpha > 0.9 * r.alpha_assoc and r.size.rows > 600,
+T.ok(#r.starts == 1 and r.certified and r.alpha > 0.9 * r.alpha_assoc and r.size.rows > 600
+     and r.alpha_assoc < 0.9 * r.alpha_rigid,
      "running bond 16 x 16: a start that certifies near the associative alpha ends the search",
-     ("%d starts, %s, %.4f, associative %.4f"):format(#r.starts, r.status, r.alpha, r.alpha_assoc))
+     ("%d starts, %s, %.4f, associative %.4f, unlimited friction %.4f"):format(#r.starts, r.status, r.alpha,
+                                                                              r.alpha_assoc, r.alpha_rigid))
 
 -- The default: the non-associative answer wherever a joint has finite
 -- friction, the associative one beside it; rigid joints need no sequence.
@@ -285,6 +288,28 @@ do
   T.ok(r.certified and r.verified and r.alpha <= low.alpha + 5e-5 and #r.starts > 1,
        ("W4 doubled, mu = 5, default: restarts, alpha <= mu = 0.65's %.6f + 0.00005"):format(low.alpha),
        ("%.6f, %d starts"):format(r.alpha, #r.starts))
+end
+-- W1 one block thick in 3D at mu = 2: one start certifies 1.7867, within
+-- 10 % of the associative 1.8414, which is within 10 % of unlimited
+-- friction's (the whole wall overturning, b/h = 2/1.05 = 1.90476): friction
+-- hardly bounds the associative answer, and by default 10 restarts follow
+-- (doc/seqlp.md 18; they certify 0.8005).  The answer: certified, below
+-- that overturning, the lowest of its starts.
+do
+  model { mu = 2, dim = 3 }
+  wall { courses = walls.W1, unit = { 0.4, 0.175 }, depth = 0.2 }
+  r = solve { progress = false }
+  local first, lowest = r.starts[1].alpha or 0 / 0, math.huge
+  for _, st in ipairs(r.starts) do
+    if st.certified then lowest = math.min(lowest, st.alpha) end
+  end
+  T.ok(first > 0.9 * r.alpha_assoc and r.alpha_assoc > 0.9 * r.alpha_rigid
+       and math.abs(r.alpha_rigid - 2 / 1.05) <= 1e-6 * 2 / 1.05,
+       "W1 in 3D, mu = 2: start 0 within 10 % of the associative alpha, that within 10 % of b/h = 1.90476",
+       ("%.5f %.5f %.5f"):format(first, r.alpha_assoc, r.alpha_rigid))
+  T.ok(r.certified and r.verified and #r.starts > 1 and r.alpha == lowest and r.alpha < 2 / 1.05,
+       "W1 in 3D, mu = 2, default: restarts, the lowest certified alpha, below b/h",
+       ("%.5f, %d starts"):format(r.alpha, #r.starts))
 end
 -- A block over an opening with no lintel, held by head-joint friction only:
 -- the sequence does not certify it (DESIGN 2.4's hard case); it must say so
