@@ -128,6 +128,18 @@ function Result.__tostring(r)
     elseif paths > 1 then
       say("  (%d starts, each another path to a solution, %d certified%s)", paths, certified,
           r.certified and "; alpha is the lowest" or "")
+      local why, first = r.restarts_why, r.starts[1].alpha
+      if why == "settled" then
+        say("  (restarts by default: start 1 settled at the associative alpha)")
+      elseif why == "not certified" then
+        say("  (restarts by default: start 1 did not certify)")
+      elseif why == "below" then
+        say("  (restarts by default: start 1 certified %.6g, more than 10 %% below the", first)
+        say("  associative alpha)")
+      elseif why == "near rigid" then
+        say("  (restarts by default: the associative alpha is within 10 %% of unlimited friction's,")
+        say("  %.6g; start 1 certified %.6g)", r.alpha_rigid, first)
+      end
     elseif r.certified then
       say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")
     end

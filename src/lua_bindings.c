@@ -1059,6 +1059,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
         set_number(L, "alpha_rigid", s->alpha_rigid);
         if (s->certified) set_number(L, "alpha_settled", s->alpha_settled);
         set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
+        if (s->restarts_why) set_string(L, "restarts_why", s->restarts_why);
         if (s->live_scales_dead) set_boolean(L, "live_scales_dead", 1);
         if (s->none_dilates) set_boolean(L, "none_dilates", 1);
         set_integer(L, "lps", s->lps);

@@ -513,23 +513,31 @@ static void name_blocks(run *r, bl_solution *s, int lp)
     size_t len = (size_t)snprintf(s->note, sizeof s->note,
                                   "start %d, LP %d had no equilibrium with the relaxed friction "
                                   "capacities", start_number(s), lp + 1);
-    if (!ray) return;
+    if (!ray) {
+        snprintf(s->note + len, sizeof s->note - len, " (the LP engine did not say at which blocks)");
+        return;
+    }
     double big = 0.0;
     for (int i = 0; i < r->fixed->nrows; i++) big = fmax(big, fabs(ray[i]));
-    int named = 0;
-    for (int b = 0; b < m->nblocks && len < sizeof s->note; b++) {
-        int row = r->fixed->block_row[b];
-        if (row < 0) continue;
-        double w = 0.0;
-        for (int i = 0; i < (r->fixed->dim == 3 ? 6 : 3); i++) w = fmax(w, fabs(ray[row + i]));
-        if (w < 1e-3 * big) continue;
-        if (named < 8)
-            len += (size_t)snprintf(s->note + len, sizeof s->note - len, "%s%d",
-                                    named ? ", " : " at blocks ", b + 1);
-        named++;
+    int n = r->fixed->dim == 3 ? 6 : 3, total = 0, named = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        for (int b = 0; b < m->nblocks; b++) {
+            int row = r->fixed->block_row[b];
+            if (row < 0) continue;
+            double w = 0.0;
+            for (int i = 0; i < n; i++) w = fmax(w, fabs(ray[row + i]));
+            if (w < 1e-3 * big) continue;
+            if (pass == 0) {
+                total++;
+            } else if (named < 8 && len < sizeof s->note) {
+                len += (size_t)snprintf(s->note + len, sizeof s->note - len, "%s%d",
+                                        named ? ", " : total == 1 ? " at block " : " at blocks ", b + 1);
+                named++;
+            }
+        }
     }
-    if (named > 8 && len < sizeof s->note)
-        snprintf(s->note + len, sizeof s->note - len, " and %d more", named - 8);
+    if (total > 8 && len < sizeof s->note)
+        snprintf(s->note + len, sizeof s->note - len, " and %d more", total - 8);
 }
 
 /* After LP j (forces x, alpha a; the alpha before it prev):
@@ -1534,6 +1542,14 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                      : search          ? BL_SEQLP_SEARCH
                      : retry           ? BL_SEQLP_RETRIES
                                        : 0;
+            /* why the default restarts, for the user (r.restarts_why) */
+            if (sliding && o->starts < 0 && starts > 0)
+                s->restarts_why = small                  ? "small"
+                                  : s->assoc_is_solution ? "solution"
+                                  : at_assoc             ? "settled"
+                                  : !search              ? "not certified"
+                                  : dropped              ? "below"
+                                                         : "near rigid";
         }
     }
 

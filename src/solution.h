@@ -119,6 +119,7 @@ typedef struct bl_solution {
     double alpha_settled;    /* the alpha of the LP whose mechanism the answer's
                                 certificate holds (the answer is at or below it) */
     int assoc_is_solution;   /* alpha_assoc = alpha_rigid: friction limits nothing */
+    const char *restarts_why; /* why the default ran restarts (static), or NULL */
     int certified;           /* a certificate LP accepted (alpha, x, u) */
     int interrupted;         /* Ctrl-C ended the search early */
     int time_up;             /* the time limit ended it, after an answer */
