@@ -47,6 +47,7 @@ typedef struct run {
     double t0;             /* when the run began */
     int iterations;        /* of the random-state LPs */
     int shown;             /* a progress line is on the screen */
+    int planned;           /* starts in all, once start 0 has decided it */
     int found;             /* a certified answer is kept in best_* */
     int least_n;           /* the fixed LPs prefer the least normal force */
     int bounded;           /* some fixed LP of the run had an answer */
@@ -832,7 +833,11 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
         if (o->base.verbose)
             fprintf(stderr, "seqlp start %d LP %d: alpha %.8g\n", start_number(s), j + 1, a);
         else if (o->progress && bl_clock() - r->t0 > 0.5) {
-            fprintf(stderr, "\rseqlp: start %d, LP %d, alpha %.6g   ", start_number(s), j + 1, a);
+            char of[24] = "", low[40] = "";
+            if (r->planned > 1) snprintf(of, sizeof of, " of %d", r->planned);
+            if (r->found) snprintf(low, sizeof low, ", lowest certified %.6g", r->best_alpha);
+            fprintf(stderr, "\rseqlp: start %d%s, LP %d, alpha %.6g%s   ", start_number(s), of, j + 1, a,
+                    low);
             r->shown = 1;
         }
         int near_now = 0; /* the nearest forces follow this LP's failed certificate */
@@ -1542,6 +1547,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                      : search          ? BL_SEQLP_SEARCH
                      : retry           ? BL_SEQLP_RETRIES
                                        : 0;
+            r.planned = starts + 1;
             /* why the default restarts, for the user (r.restarts_why) */
             if (sliding && o->starts < 0 && starts > 0)
                 s->restarts_why = small                  ? "small"
@@ -1634,7 +1640,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     }
     s->iterations += r.iterations;
     if (r.lp_fixed) s->lp = bl_lp_engine(r.lp_fixed);
-    if (r.shown) fprintf(stderr, "\r%60s\r", "");
+    if (r.shown) fprintf(stderr, "\r%79s\r", "");
     path_free(&pj);
     run_free(&r);
     s->time.total = bl_clock() - t0;
