@@ -122,12 +122,17 @@ wall { courses = c, unit = { 0.4, 0.175 } }
 LUA
   }
   running_bond 100 > "$tmp/big.lua"
-  s="blocklim_cli_$$"
+  # each session on a server of its own: a new session on the socket of
+  # one just killed could meet that server while it exited ("server exited
+  # unexpectedly", once in CI)
+  k=0
+  fresh() { k=$((k + 1)); s="blocklim_cli_$$_$k"; }
   tmux() { command tmux -L "$s" "$@"; }
   # interrupt SCRIPT COMMAND WAIT PROBE: at the prompt with SCRIPT loaded,
   # type COMMAND, press Ctrl-C WAIT seconds later, then type PROBE; the
   # screen is left in $screen
   interrupt() {
+    fresh
     tmux new-session -d -s "$s" -x 200 -y 30 "HOME=$tmp $bin -i $1"
     sleep 1
     tmux send-keys -t "$s" "$2" Enter
@@ -139,6 +144,7 @@ LUA
     screen=$(tmux capture-pane -p -t "$s")
     tmux kill-session -t "$s" 2>/dev/null
   }
+  fresh
   tmux new-session -d -s "$s" -x 120 -y 30 "HOME=$tmp $bin -i $tmp/big.lua"
   sleep 1
   for lp in simplex ipm; do
@@ -241,6 +247,7 @@ LUA
     grep -qE 'path stopped[[:space:]]+true[[:space:]]+true' <<<"$screen"
 
   # Ctrl-C during Ipopt (method "mpec"): its intermediate callback stops it.
+  fresh
   tmux new-session -d -s "$s" -x 200 -y 30 "HOME=$tmp $bin -i $tmp/big.lua"
   sleep 1
   tmux send-keys -t "$s" "m = model { mu = 0.65 } wall { courses = { {.5,1,1,1,1,1,1,1,1,1,1,.5}, {1,1,1,1,1,1,1,1,1,1,1}, {.5,1,1,1,1,1,1,1,1,1,1,.5}, {1,1,1,1,1,1,1,1,1,1,1}, {.5,1,1,1,1,1,1,1,1,1,1,.5}, {1,1,1,1,1,1,1,1,1,1,1} }, unit = { 0.4, 0.175 } }" Enter
