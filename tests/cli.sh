@@ -83,29 +83,22 @@ else
   echo "ok $((n + 1)) - MPS check # SKIP glpsol not installed"; n=$((n + 1))
 fi
 
-# Ctrl-C during a long solve: the prompt comes back and the model is intact.
 # The progress line of a long non-associative solve (on standard error,
 # asked for with progress = true off a terminal): which start of how many
 # (W4 doubled at mu = 5 runs 10 restarts by default, doc/seqlp.md 18) and
 # the lowest alpha certified so far.
 cat > "$tmp/progress.lua" <<EOF
 package.path = "$(dirname "$0")/lua/?.lua;" .. package.path
-local walls, twice = require "walls", {}
-for _ = 1, 2 do
-  for _, c in ipairs(walls.W4) do
-    local row = {}
-    for _ = 1, 2 do for _, x in ipairs(c) do row[#row + 1] = x end end
-    twice[#twice + 1] = row
-  end
-end
+local walls = require "walls"
 model { mu = 5 }
-wall { courses = twice, unit = { 0.4, 0.175 } }
+wall { courses = walls.doubled(walls.W4), unit = { 0.4, 0.175 } }
 solve { progress = true }
 EOF
 "$bin" "$tmp/progress.lua" 2>"$tmp/progress"
 check "progress: the start of how many, LP, alpha and the lowest certified so far" \
   grep -Eq "seqlp: start [0-9]+ of 11, LP [0-9]+, alpha [0-9.]+, lowest certified 0\.[0-9]+" <(tr '\r' '\n' < "$tmp/progress")
 
+# Ctrl-C during a long solve: the prompt comes back and the model is intact.
 if command -v tmux >/dev/null; then
   # running_bond N: a script that builds a running-bond wall of N x N blocks
   running_bond() {

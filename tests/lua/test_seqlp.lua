@@ -96,14 +96,7 @@ T.ok(r.history[22][1] == one.history[1][4]
 -- Above the simplex's sizes restarts follow only while none has certified:
 -- W4 doubled each way (220 blocks, 660 rows), start 0 from the associative
 -- forces, 3 LPs a start: 3 more starts, none certified, then start 1 goes on.
-local twice = {}
-for _ = 1, 2 do
-  for _, c in ipairs(walls.W4) do
-    local row = {}
-    for _ = 1, 2 do for _, x in ipairs(c) do row[#row + 1] = x end end
-    twice[#twice + 1] = row
-  end
-end
+local twice = walls.doubled(walls.W4)
 model { mu = 0.65 }
 wall { courses = twice, unit = { 0.4, 0.175 } }
 r = solve { flow = "nonassociative", lps = 3, path = false }

@@ -46,6 +46,20 @@ function walls.running_bond(n)
   return courses
 end
 
+-- A wall doubled each way: every course twice as long (the course, then
+-- itself again) and the courses twice over (W4 doubled: 220 blocks).
+function walls.doubled(courses)
+  local out = {}
+  for _ = 1, 2 do
+    for _, c in ipairs(courses) do
+      local row = {}
+      for _ = 1, 2 do for _, x in ipairs(c) do row[#row + 1] = x end end
+      out[#out + 1] = row
+    end
+  end
+  return out
+end
+
 -- A running-bond wall of n x n blocks with windows 3 blocks wide and 4
 -- courses high, every 8 blocks from the fourth along courses 8-11 and
 -- 18-21 (six at n = 30), no lintels:
