@@ -128,17 +128,22 @@ function Result.__tostring(r)
     elseif paths > 1 then
       say("  (%d starts, each another path to a solution, %d certified%s)", paths, certified,
           r.certified and "; alpha is the lowest" or "")
-      local why, first = r.restarts_why, r.starts[1].alpha
+      -- the rules apply to the first start to certify: start 1, or a
+      -- retry where start 1 did not
+      local why, k = r.restarts_why, 1
+      while r.starts[k + 1] and not r.starts[k].certified do k = k + 1 end
+      local first = r.starts[k].alpha
+      local which = k == 1 and "start 1" or ("start 1 did not certify; start %d"):format(k)
       if why == "settled" then
-        say("  (restarts by default: start 1 settled at the associative alpha)")
+        say("  (restarts by default: %s settled at the associative alpha)", which)
       elseif why == "not certified" then
         say("  (restarts by default: start 1 did not certify)")
       elseif why == "below" then
-        say("  (restarts by default: start 1 certified %.6g, more than 10 %% below the", first)
-        say("  associative alpha)")
+        say("  (restarts by default: %s certified %.6g,", which, first)
+        say("  more than 10 %% below the associative alpha)")
       elseif why == "near rigid" then
         say("  (restarts by default: the associative alpha is within 10 %% of unlimited friction's,")
-        say("  %.6g; start 1 certified %.6g)", r.alpha_rigid, first)
+        say("  %.6g; %s certified %.6g)", r.alpha_rigid, which, first)
       end
     elseif r.certified then
       say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")

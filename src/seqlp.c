@@ -136,6 +136,29 @@ static int has_rigid(const bl_model *m)
     return 0;
 }
 
+/* Whether the default runs BL_SEQLP_SEARCH restarts after the first start
+ * to certify (start 0, or a retry where start 0 did not), and why
+ * (r.restarts_why), or NULL: it settled at the associative alpha; or, up
+ * to a size (BL_SEQLP_MARGIN_ROWS, BL_SEQLP_MARGIN_COLUMNS3), it certified
+ * more than BL_SEQLP_MARGIN below a finite associative alpha, or the
+ * associative alpha is within that of unlimited friction's (doc/seqlp.md
+ * 17, 18). */
+static const char *search_after(const run *r, const bl_solution *s, const bl_model *mc,
+                                const bl_seqlp_options *o)
+{
+    if (!r->found) return NULL;
+    if (r->best_settled >= s->alpha_assoc - o->settle * fabs(s->alpha_assoc)) return "settled";
+    int medium = (mc->dim == 2 && r->fixed->nrows <= BL_SEQLP_MARGIN_ROWS) ||
+                 (mc->dim == 3 && r->fixed->ncols <= BL_SEQLP_MARGIN_COLUMNS3);
+    if (!medium) return NULL;
+    if (isfinite(s->alpha_assoc) && r->best_alpha < s->alpha_assoc - BL_SEQLP_MARGIN * fabs(s->alpha_assoc))
+        return "below";
+    if (isfinite(s->alpha_rigid) && !has_rigid(mc) &&
+        s->alpha_assoc >= s->alpha_rigid - BL_SEQLP_MARGIN * fabs(s->alpha_rigid))
+        return "near rigid";
+    return NULL;
+}
+
 /* Whether the search at (mu_rigid, mu_cap) changes some joint's friction. */
 static int search_differs(const bl_model *m, double mu_rigid, double mu_cap)
 {
@@ -1441,7 +1464,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
      * How many restarts follow is decided after start 0 (below). */
     int retry = 0, starts = 0;
     start_state first = {0}; /* where start 0 stopped */
-    for (int k = 0; k == 0 || (k <= starts && stop == BL_LP_OPTIMAL && !(retry && r.found)); k++) {
+    for (int k = 0; k == 0 || (k <= starts && stop == BL_LP_OPTIMAL); k++) {
         /* (after an unbounded associative LP, below the first fixed LP's
          * answer, at 0 where none had one) */
         double from = r.found ? r.best_alpha
@@ -1528,34 +1551,32 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
              * the associative alpha is within it of unlimited friction's
              * (friction hardly bounds it, and dilatancy hides sliding):
              * one start was up to 2.9 times the lowest answer found
-             * (doc/seqlp.md 18). */
-            int at_assoc = r.found && r.best_settled >= s->alpha_assoc - o->settle * fabs(s->alpha_assoc);
+             * (doc/seqlp.md 18).  Where start 0 did not certify, the
+             * first retry to certify decides so (search_after). */
             int small = (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS) ||
                         (mc->dim == 3 && r.fixed->ncols <= BL_SEQLP_SEARCH_COLUMNS3);
-            int medium = (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_MARGIN_ROWS) ||
-                         (mc->dim == 3 && r.fixed->ncols <= BL_SEQLP_MARGIN_COLUMNS3);
-            int dropped = isfinite(s->alpha_assoc) &&
-                          r.best_alpha < s->alpha_assoc - BL_SEQLP_MARGIN * fabs(s->alpha_assoc);
-            int near_rigid = isfinite(s->alpha_rigid) && !has_rigid(mc) &&
-                             s->alpha_assoc >= s->alpha_rigid - BL_SEQLP_MARGIN * fabs(s->alpha_rigid);
-            int search = s->assoc_is_solution || at_assoc || small ||
-                         (r.found && medium && (dropped || near_rigid));
-            retry = sliding && o->starts < 0 && !search && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
+            const char *why = small ? "small" : s->assoc_is_solution ? "solution" : search_after(&r, s, mc, o);
+            retry = sliding && o->starts < 0 && !why && !r.found && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
             starts = !sliding          ? 0
                      : o->starts >= 0  ? o->starts
                      : small           ? BL_SEQLP_SEARCH_SMALL
-                     : search          ? BL_SEQLP_SEARCH
+                     : why             ? BL_SEQLP_SEARCH
                      : retry           ? BL_SEQLP_RETRIES
                                        : 0;
             r.planned = starts + 1;
             /* why the default restarts, for the user (r.restarts_why) */
-            if (sliding && o->starts < 0 && starts > 0)
-                s->restarts_why = small                  ? "small"
-                                  : s->assoc_is_solution ? "solution"
-                                  : at_assoc             ? "settled"
-                                  : !search              ? "not certified"
-                                  : dropped              ? "below"
-                                                         : "near rigid";
+            if (sliding && o->starts < 0 && starts > 0) s->restarts_why = why ? why : "not certified";
+        } else if (retry && r.found) {
+            /* the first retry to certify: the restarts start 0 would have
+             * decided on its answer follow it (the running bond of 16 x 16
+             * at mu = 2 towards -x: start 0 did not certify, the second
+             * retry certified 0.65710, 0.386 of the associative alpha, and
+             * 10 restarts after it 0.63097; doc/seqlp.md 18) */
+            const char *why = search_after(&r, s, mc, o);
+            retry = 0;
+            starts = why ? k + BL_SEQLP_SEARCH : k;
+            r.planned = starts + 1;
+            if (why) s->restarts_why = why;
         }
     }
 
