@@ -23,6 +23,7 @@ void bl_solve_options_default(bl_solve_options *o)
     o->early_infeasible = 0;
     o->lp_tolerance = 0;
     o->weighted = 1;
+    o->progress = 0;
     o->dead_load = BL_DEAD_BESIDE;
 }
 
@@ -39,6 +40,7 @@ bl_lp *bl_solve_lp(const bl_system *s, const double *lo, const double *hi, const
     ls.early_infeasible = o->early_infeasible;
     ls.tolerance = o->lp_tolerance;
     ls.weighted = o->weighted;
+    ls.progress = o->progress;
     bl_lp_problem p = {s->nrows, s->ncols, s->colptr, s->rowind, s->val,
                        lo,       hi,       s->rhs,    obj ? obj : s->obj};
     return bl_lp_create(&p, &ls, err);
@@ -92,7 +94,9 @@ static void dead_start(dead_check *c, const bl_system *sys, const bl_solve_optio
         memcpy(hi, sys->hi, n * sizeof *hi);
         lo[sys->nforce] = hi[sys->nforce] = 0.0;
         if (reuse) bl_lp_set_bounds(reuse, lo, hi);
-        c->lp = reuse ? reuse : bl_solve_lp(sys, lo, hi, NULL, o, &err);
+        bl_solve_options quiet = *o; /* beside, its line would mix with the LP's */
+        quiet.progress = 0;
+        c->lp = reuse ? reuse : bl_solve_lp(sys, lo, hi, NULL, &quiet, &err);
         c->owned = !reuse;
     }
     free(lo);

@@ -41,6 +41,7 @@ void bl_lp_settings_default(bl_lp_settings *s)
     s->threads = 0;
     s->early_infeasible = 0;
     s->weighted = 1;
+    s->progress = 0;
 }
 
 bl_lp *bl_lp_create(const bl_lp_problem *p, const bl_lp_settings *s, bl_error *err)

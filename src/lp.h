@@ -69,6 +69,10 @@ typedef struct bl_lp_settings {
                              LPs whose "infeasible" only means "go on" */
     int weighted;        /* ipm: the weighted central path (lp_ipm.c,
                              path_weights); 0: the analytic centre's */
+    int progress;        /* ipm: from half a second into a solve, one line on
+                            standard error with its iteration and largest
+                            residual, rewritten at each and cleared at the
+                            end (not with verbose) */
 } bl_lp_settings;
 
 void bl_lp_settings_default(bl_lp_settings *s);

@@ -731,6 +731,7 @@ static bl_lp_status solve(void *e)
     p->factor_time = p->solve_time = 0.0;
     bl_lp_status status = BL_LP_ITERATION_LIMIT;
     int keep = 1; /* no iterate of this solve kept yet */
+    int shown = 0; /* a progress line is on the screen */
     double stall_gap = INFINITY, stall_mu = INFINITY; /* the last real fall of the gap */
     int stall_it = 0;
     double stall_ep = INFINITY; /* the last real fall of the primal residual */
@@ -782,6 +783,11 @@ static bl_lp_status solve(void *e)
         if (p->set.verbose)
             fprintf(stderr, "ipm %3d  alpha %.10g  primal %.1e  dual %.1e  gap %.1e  mu %.1e\n",
                     it, p->a, ep, ed, eg, mu);
+        else if (p->set.progress && bl_clock() - t0 > 0.5) {
+            fprintf(stderr, "\rinterior point: iteration %d, largest residual %.1e (done at %.0e)   ", it,
+                    fmax(fmax(ep, eu), fmax(ed, eg)), tol);
+            shown = 1;
+        }
         if (ep <= tol && eu <= tol && ed <= tol && eg <= tol) {
             status = BL_LP_OPTIMAL;
             break;
@@ -1055,6 +1061,7 @@ static bl_lp_status solve(void *e)
             fprintf(stderr, "ipm: the iterates lost their feasibility: the best one, gap %.1e\n", best.gap);
     }
     free(best.x);
+    if (shown) fprintf(stderr, "\r%79s\r", "");
     answers(p);
     if (p->set.verbose)
         fprintf(stderr, "ipm: %d iterations in %.3f s: %d factorizations %.3f s, %d solves %.3f s\n",

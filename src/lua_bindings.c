@@ -1448,6 +1448,7 @@ static int solve_or_check(lua_State *L, int check)
     so.base = o;
     mo.seq = so;
     mo.seq.when_sliding = 0;
+    o.progress = so.progress; /* the associative LP's own line */
     int rc = method == MPEC    ? bl_mpec_solve(m, &mo, box, &err)
              : method == SEQLP ? bl_seqlp_solve(m, &so, box, &err)
                                : bl_assoc_solve(m, &o, box, &err);

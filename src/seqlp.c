@@ -1277,6 +1277,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     path_job pj = {0};
     if (sliding && path_start(m, o, &pj, err)) return -1;
     if (pj.beside) base.dead_load = BL_DEAD_AFTER; /* the path has the other core */
+    base.progress = o->progress && !pj.beside;     /* beside, the path shows its own */
     if (bl_assoc_solve(m, &base, &s, err)) {
         path_free(&pj);
         return -1;
