@@ -31,8 +31,9 @@ typedef struct bl_solve_options {
                            sequence of LPs and the direct solve leave it
                            off for their own LPs and their start */
     int progress;       /* the interior point's progress line on the
-                           associative LP (lp.h), not on the dead-load
-                           check's; the sequence of LPs shows its own */
+                           associative LP and the checks after it (lp.h),
+                           not on a dead-load check beside it; the
+                           sequence's fixed LPs show none (seqlp.c) */
     int dead_load;      /* the check that the dead load alone has an
                            equilibrium (bl_assoc_solve): BL_DEAD_BESIDE (the
                            default), BL_DEAD_AFTER or BL_DEAD_NONE; not a

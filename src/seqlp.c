@@ -1253,6 +1253,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
      * 10,050-block wall took 106 or 150 LPs instead of 86. */
     int weighted = o->base.weighted; /* the caller's, for an associative answer alone */
     own.base.weighted = 0;
+    own.base.progress = 0; /* only the associative LP shows the interior point's line (below) */
     o = &own;
     /* (3D: the associative start on the sequence's own pyramid) */
     bl_solve_options base = o->base;
@@ -1295,6 +1296,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         }
     }
     s->time.detection += detection;
+    base.progress = 0;
     /* An unbounded associative LP proves nothing without dilatancy (a block wedged
      * between supports cannot slide out if its joints must open, but can
      * if they need not): start 0 then begins from no normal forces, so
@@ -1462,7 +1464,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     unsigned long long rng = o->seed;
     bl_lp_status stop = BL_LP_OPTIMAL;
     /* Without sliding joints the first LP settles and certifies at once.
-     * How many restarts follow is decided after start 0 (below). */
+     * How many restarts follow is decided after start 0, or after the
+     * first retry to certify where start 0 did not (below). */
     int retry = 0, starts = 0;
     start_state first = {0}; /* where start 0 stopped */
     for (int k = 0; k == 0 || (k <= starts && stop == BL_LP_OPTIMAL); k++) {
@@ -1671,6 +1674,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     *out = s;
     return 0;
 fail:
+    if (r.shown) fprintf(stderr, "\r%79s\r", ""); /* the error's message on a line of its own */
     path_free(&pj);
     if (r.rigid_beside) pthread_join(r.rigid_thread, NULL);
     bl_lp_free(rl.lp);

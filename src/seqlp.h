@@ -21,9 +21,12 @@ typedef struct bl_seqlp_options {
                               < 0: BL_SEQLP_SEARCH on 2D models of at most
                               BL_SEQLP_SEARCH_ROWS rows, 3D ones of at most
                               BL_SEQLP_SEARCH_COLUMNS3 columns, and where unlimited
-                              friction gives the associative alpha, else up
-                              to BL_SEQLP_RETRIES until one certifies, on
-                              models of at most BL_SEQLP_RETRY_ROWS rows */
+                              friction gives the associative alpha or the
+                              rules of BL_SEQLP_MARGIN hold, else up to
+                              BL_SEQLP_RETRIES until one certifies (then
+                              BL_SEQLP_SEARCH more where those rules hold
+                              for it), on models of at most
+                              BL_SEQLP_RETRY_ROWS rows */
     unsigned long long seed; /* of those random states */
     int nearest;           /* after this many failed certificates of a start,
                               each further one is followed by the nearest
@@ -33,7 +36,9 @@ typedef struct bl_seqlp_options {
                               applies, instead of the associative forces: 1
                               yes, 0 no, < 0 where the fixed LPs run on the
                               interior point */
-    int progress;          /* show start, LP and alpha on stderr after 0.5 s */
+    int progress;          /* after 0.5 s, one line on stderr kept up to date:
+                              the associative LP's iteration (lp.h), the
+                              path's step, then start, LP and alpha */
     int when_sliding;      /* solve's default: without a joint of finite, non-zero
                               friction, return the associative answer alone */
 } bl_seqlp_options;
@@ -41,7 +46,8 @@ typedef struct bl_seqlp_options {
 void bl_seqlp_options_default(bl_seqlp_options *o);
 
 /* By default a first start that ends without a certificate is followed by
- * further starts until one certifies, up to BL_SEQLP_RETRIES: whether a
+ * further starts until one certifies, up to BL_SEQLP_RETRIES (and the
+ * restarts of BL_SEQLP_MARGIN after it where its rules hold): whether a
  * start certifies within its LPs is close to chance on domes (one start
  * certified 4 of 6 and, with other round-off, 3 of 6; with the retries 6
  * and 5, doc/seqlp.md 14).  Only up to BL_SEQLP_RETRY_ROWS rows, where a

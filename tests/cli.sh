@@ -99,21 +99,28 @@ check "progress: the start of how many, LP, alpha and the lowest certified so fa
   grep -Eq "seqlp: start [0-9]+ of 11, LP [0-9]+, alpha [0-9.]+, lowest certified 0\.[0-9]+" <(tr '\r' '\n' < "$tmp/progress")
 
 # The interior point's line on a long associative LP (the running bond of
-# 70 x 70, 4,935 blocks: about 2 s), cleared when it ends: the last thing
-# written to standard error is a run of blanks.
-cat > "$tmp/progress_lp.lua" <<EOF
+# 100 x 100, 10,050 blocks: 3-5 s, the line from 0.5 s on), cleared when
+# it ends (a carriage return, 79 blanks, a carriage return); with
+# verbose = true the engine's own lines instead.
+for v in false true; do
+  cat > "$tmp/progress_lp_$v.lua" <<EOF
 package.path = "$(dirname "$0")/lua/?.lua;" .. package.path
 local walls = require "walls"
 model { mu = 0.65 }
-wall { courses = walls.running_bond(70), unit = { 0.4, 0.175 } }
-print(solve { flow = "associative", progress = true }.status)
+wall { courses = walls.running_bond(100), unit = { 0.4, 0.175 } }
+print(solve { flow = "associative", progress = true, verbose = $v }.status)
 EOF
-"$bin" "$tmp/progress_lp.lua" 2>"$tmp/progress_lp" >"$tmp/progress_lp.out"
-tr '\r' '\n' < "$tmp/progress_lp" > "$tmp/progress_lp.lines"
+  "$bin" "$tmp/progress_lp_$v.lua" 2>"$tmp/progress_lp_$v" >"$tmp/progress_lp_$v.out"
+done
 check "progress, associative LP: the interior point's iteration and largest residual" \
-  grep -Eq 'interior point: iteration [0-9]+, largest residual [0-9.e+-]+ \(done at 1e-08\)' "$tmp/progress_lp.lines"
+  grep -Eq 'interior point: iteration [0-9]+, largest residual [0-9.e+-]+ \(done at 1e-08\)' \
+  <(tr '\r' '\n' < "$tmp/progress_lp_false")
 check "progress, associative LP: the line cleared at the end, the answer on standard output" \
-  bash -c "[ -z \"\$(tail -n 1 '$tmp/progress_lp.lines' | tr -d ' ')\" ] && grep -qx optimal '$tmp/progress_lp.out'"
+  bash -c "[ \"\$(tail -c 81 '$tmp/progress_lp_false' | od -An -c -v | tr -d ' \n')\" = '\\r\\r' ] &&
+           grep -qx optimal '$tmp/progress_lp_false.out'"
+check "progress with verbose = true: the engine's lines, no progress line" \
+  bash -c "grep -q '^ipm ' '$tmp/progress_lp_true' && ! grep -q 'interior point:' '$tmp/progress_lp_true' &&
+           grep -qx optimal '$tmp/progress_lp_true.out'"
 
 # Ctrl-C during a long solve: the prompt comes back and the model is intact.
 if command -v tmux >/dev/null; then
