@@ -692,6 +692,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     bl_cone pyramid = bl_seqlp_pyramid(&o->seq.base.cone);
     if (m->dim == 3) oo.seq.base.cone = pyramid;
     oo.seq.base.weighted = 0; /* the start from the analytic centre, as the sequence's (seqlp.c) */
+    oo.seq.base.progress = o->seq.progress; /* the associative LP's line (the sequence keeps its own) */
     o = &oo;
     /* the start: the associative LP (also for a cold start: it detects,
      * copies the model and tells models without an answer apart), or the
