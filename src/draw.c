@@ -348,6 +348,25 @@ static void extent(pic *P, double box[4])
         }
 }
 
+/* For the caption: where the weight-proportional live load points, "" where
+ * there is none (its point loads have arrows; this one acts on every
+ * block): "; live load along -x", or along its unit vector. */
+static void live_words(const bl_model *m, char *out, size_t n)
+{
+    out[0] = '\0';
+    if (!m || !m->live_weight) return;
+    double d[3] = {m->live_dir.x, m->live_dir.y, 0.0};
+    if (m->dim == 3) d[0] = m->live_dir3.x, d[1] = m->live_dir3.y, d[2] = m->live_dir3.z;
+    int dims = m->dim == 3 ? 3 : 2;
+    for (int k = 0; k < dims; k++)
+        if (fabs(fabs(d[k]) - 1.0) < 1e-12) {
+            snprintf(out, n, "; live load along %c%c", d[k] > 0 ? '+' : '-', "xyz"[k]);
+            return;
+        }
+    if (dims == 2) snprintf(out, n, "; live load along (%.3g, %.3g)", d[0], d[1]);
+    else snprintf(out, n, "; live load along (%.3g, %.3g, %.3g)", d[0], d[1], d[2]);
+}
+
 /* Fixes the canvas size and where everything goes. */
 static void layout(pic *P, const bl_solution *s, int width, double azimuth, double elevation)
 {
@@ -420,8 +439,10 @@ static void layout(pic *P, const bl_solution *s, int width, double azimuth, doub
                         : (s->status == BL_OPTIMAL || s->status == BL_UNSTABLE) && isfinite(s->alpha)
                             ? ", NOT verified"
                             : "";
-    snprintf(P->caption, sizeof P->caption, "%s  (%s, %s flow, %s%s)", value, name ? name : "?",
-             s->flow, s->method, check);
+    char live[64];
+    live_words(P->m, live, sizeof live);
+    snprintf(P->caption, sizeof P->caption, "%s  (%s, %s flow, %s%s%s)", value, name ? name : "?",
+             s->flow, s->method, check, live);
     P->has_legend = P->m && P->k > 0.0;
 
     /* text widths need a cairo context; a 1x1 image gives the same metrics
