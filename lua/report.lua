@@ -101,7 +101,11 @@ function Result.__tostring(r)
     if near > 0 then
       say("  %d certificates tried; the nearest forces after %d that failed", tried, near)
     end
-    if r.alpha_settled and r.alpha_settled - r.alpha > 1e-9 * math.abs(r.alpha) then
+    if r.certified_early then
+      say("  certified from an LP at %.6g, before its sequence settled (below the lowest alpha",
+          r.alpha_settled)
+      say("  certified until then); its mechanism is a solution from %.6g", r.alpha)
+    elseif r.alpha_settled and r.alpha_settled - r.alpha > 1e-9 * math.abs(r.alpha) then
       say("  the sequence settled at %.6g; its mechanism is a solution from %.6g, the lowest alpha",
           r.alpha_settled, r.alpha)
       say("  at which forces fit it")

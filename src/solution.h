@@ -118,6 +118,8 @@ typedef struct bl_solution {
     double alpha_rigid;      /* ... with unlimited friction (INFINITY: unbounded) */
     double alpha_settled;    /* the alpha of the LP whose mechanism the answer's
                                 certificate holds (the answer is at or below it) */
+    int early;               /* that LP came before its sequence settled, below the
+                                lowest alpha certified until then (seqlp.c) */
     int assoc_is_solution;   /* alpha_assoc = alpha_rigid: friction limits nothing */
     const char *restarts_why; /* why the default ran restarts (static), or NULL */
     int certified;           /* a certificate LP accepted (alpha, x, u) */

@@ -314,6 +314,24 @@ do
        "running bond 16 x 16, mu = 2, towards -x: why the restarts ran (the retry more than 10 % below)",
        tostring(r.restarts_why))
 end
+-- A wall 0.5 x 3 of three blocks beside a buttress 1 x 2 of two, pulled
+-- away from it: the wall rocks whole about its toe, its joint with the
+-- buttress opening but at its foot, which slides up carrying nothing:
+-- alpha = b/h = 0.5/3 (a tester's hand mechanism).  The restarts reached
+-- it in their first LPs, and the next LPs, loading that foot, left it for
+-- the upper two blocks rocking at 0.25: a certificate below the lowest
+-- certified alpha catches it (doc/seqlp.md 18).
+model { mu = 0.7 }
+for i = 0, 2 do block { vertices = { { 0, i }, { 0.5, i }, { 0.5, i + 1 }, { 0, i + 1 } } } end
+for i = 0, 1 do block { vertices = { { 0.5, i }, { 1.5, i }, { 1.5, i + 1 }, { 0.5, i + 1 } } } end
+block { vertices = { { -1, -0.3 }, { 2.5, -0.3 }, { 2.5, 0 }, { -1, 0 } }, support = true }
+load { live = "horizontal", direction = { -1, 0 } }
+r = solve { progress = false }
+T.ok(r.certified and r.verified and math.abs(r.alpha - 1 / 6) <= 1e-6,
+     "wall beside a buttress, pulled away: alpha = b/h = 1/6 +- 1e-6, certified", ("%.6f"):format(r.alpha))
+T.ok(r.certified_early == true and tostring(r):find("before its sequence settled", 1, true),
+     "wall beside a buttress: certified before its sequence settled, and print(r) says so",
+     tostring(r.certified_early))
 -- A running bond of 20 x 20 at mu = 20 (1,230 rows): one start certifies
 -- 2.2131, within 10 % of the associative 2.2793, which is within 10 % of
 -- unlimited friction's, the whole wall overturning at b/h = 8 / 3.5:
@@ -598,8 +616,10 @@ do
     { 0.5, 1, 1, 1.5, 1.5, 1, -1, -2, 1, 1, 1, 0.5, 2 }, { 0.5, 1.5, 2, 2, 1, 2, 1, 2, 1, 1, 1 } } }
   local r = solve { progress = false }
   local r3 = solve { starts = 3, progress = false }
-  T.ok(r.certified and r.verified and #r.starts == 11,
-       "104 blocks, first start at the associative alpha: 10 restarts follow", ("%d starts"):format(#r.starts))
+  -- (a restart whose stress state cannot be drawn is skipped: 10 or 11 starts)
+  T.ok(r.certified and r.verified and r.restarts_why == "settled" and #r.starts >= 10 and #r.starts <= 11,
+       "104 blocks, first start at the associative alpha: 10 restarts follow",
+       ("%d starts, %s"):format(#r.starts, tostring(r.restarts_why)))
   T.ok(r3.certified and r.alpha <= r3.alpha + 1e-9 and r.alpha < 0.5 * r.alpha_assoc,
        "104 blocks: the default answer is at most starts = 3's (tolerance 1e-9) and below half the associative one",
        ("%.6g %.6g %.6g"):format(r.alpha, r3.alpha, r.alpha_assoc))
