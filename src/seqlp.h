@@ -92,7 +92,8 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * far from the lowest (W4 doubled each way at mu = 5, 660 rows: 0.4289
  * where 10 restarts certify 0.2307; a running bond of 16 x 16 at mu = 5,
  * 1.8951 where they certify 0.6462-0.6655; a running bond of 20 x 20 at
- * mu = 20, 2.2131 where they certify 0.7190), while where neither held
+ * mu = 20, 2.2131 where they certify 0.7190, 0.6717 since a certificate is tried
+ * before a sequence settles), while where neither held
  * restarts moved the answer by 0.5 % at most (doc/seqlp.md 18).  10
  * restarts took up to 45 s on a running bond of 12 x 12 (450 rows) and
  * 92-106 s on one of 32 x 32 (3,120 rows) for 0.3-3.3 %, hence the
