@@ -1057,8 +1057,10 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
     }
     if (seq) {
         set_number(L, "alpha_rigid", s->alpha_rigid);
-        if (s->certified) set_number(L, "alpha_settled", s->alpha_settled);
-        if (s->certified) set_boolean(L, "certified_early", s->early);
+        if (s->certified) {
+            set_number(L, "alpha_settled", s->alpha_settled);
+            set_boolean(L, "certified_early", s->early);
+        }
         set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
         if (s->restarts_why) set_string(L, "restarts_why", s->restarts_why);
         if (s->live_scales_dead) set_boolean(L, "live_scales_dead", 1);
