@@ -642,7 +642,7 @@ static void answer_from(bl_solution *s, const double *v, const layout *l, const 
     memcpy(xa, v + l->x0, (size_t)l->nx * sizeof *xa);
     xa[l->nx] = v[0];
     s->has_mechanism = 1;
-    s->res.flow = s->res.dilatancy = NAN; /* set by the non-associative check only */
+    s->res.flow = s->res.dilatancy = s->res.below = s->res.above = NAN; /* set by the non-associative check only */
     if (mc->dim == 3) {
         bl_system_forces3(c, xa, s->force);
         bl_system_mechanism3(c, mc, v + l->u0, s->u);

@@ -70,7 +70,7 @@ bl_solution *bl_solution_new(bl_model *c)
     for (size_t k = 0; k < ni; k++) s->hinge[k] = -1;
     s->method = "assoc";
     s->flow = "associative";
-    s->res.flow = s->res.dilatancy = NAN;
+    s->res.flow = s->res.dilatancy = s->res.below = s->res.above = NAN;
     s->stands = -1;
     s->alpha = s->alpha_min = NAN; /* until there is an answer */
     return s;

@@ -52,6 +52,9 @@ typedef struct bl_residuals {
     /* non-associative flow only (NAN otherwise): */
     double flow;            /* friction opposing the slip: |t dt + R |dt|| / (X V) */
     double dilatancy;       /* opening where a loaded point slides, / V */
+    /* the relative motions nearest the slip threshold, over V: the largest
+     * taken as none (below slip) and the least counted (at or above it) */
+    double below, above;
 } bl_residuals;
 
 typedef struct bl_timings {

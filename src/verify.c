@@ -164,6 +164,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         free(S);
         res->equilibrium = res->yield = res->admissibility = res->complementarity =
             res->normalization = res->work = res->flow = res->dilatancy = INFINITY;
+        res->below = res->above = NAN;
         return 0;
     }
     /* per point: normal and tangential motion and force; 3D: the tangent
@@ -232,6 +233,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
             h[cone->lead[p]] += cone->hi[j] * fabs(along);
         }
     double adm = 0.0, comp = 0.0, flow = 0.0, dil = 0.0, dissipation = 0.0;
+    double below = 0.0, above = INFINITY;
     for (int p = 0; p < np; p++) {
         double R = isinf(cone->mu[p]) ? 0.0 : cone->mu[p] * n[p] + cone->cohesion[p];
         adm = fmax(adm, -dn[p] / V);
@@ -244,6 +246,13 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
             dissipation += R * fabs(dt[p]);
         }
         if (speed[cone->lead[p]] > slip * V && n[p] > slip * X) dil = fmax(dil, dn[p] / V);
+        /* the motions the flow rule was judged on: opening and sliding,
+         * and a rigid joint's as a whole */
+        double m[4] = {fmax(dn[p], 0.0), speed[cone->lead[p]], slide[p], fmax(open[p], 0.0)};
+        for (int k = 0; k < 4; k++) {
+            if (m[k] < slip * V) below = fmax(below, m[k] / V);
+            else above = fmin(above, m[k] / V);
+        }
     }
     /* rigid joints (mu = inf): no force where the joint slides (the flow
      * rule's limit: its shear would do unbounded work), no shear or couple
@@ -262,6 +271,8 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     work(cone, alpha, y, dissipation, res);
     res->flow = flow;
     res->dilatancy = dil;
+    res->below = below;
+    res->above = above;
     free(w);
     free(buf);
     free(S);

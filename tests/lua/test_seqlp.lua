@@ -702,4 +702,56 @@ do
          ("%s %s"):format(r.status, tostring(r.alpha)))
   end
 end
+-- The motions nearest the slip threshold (doc/theory.md 6): r.residuals.below
+-- is the largest relative motion taken as none and .above the least
+-- counted, over the largest, recomputed here from the blocks' velocities
+-- and the joints' ends.  The running bond of 12 x 12 at mu = 1 with
+-- slip = 1e-3 takes a motion of about 1e-3 of the largest as none, which
+-- print(r) points out; at the default slip its gap is clear.
+do
+  model { mu = 1 }
+  wall { courses = walls.running_bond(12), unit = { 0.4, 0.175 } }
+  local m = current()
+  local function centre(i)
+    local v = m:block_info(i).vertices
+    local x, y = 0, 0
+    for _, p in ipairs(v) do x, y = x + p[1] / #v, y + p[2] / #v end
+    return x, y
+  end
+  local function motions(r, slip)
+    local list, V = {}, 0
+    for _, f in ipairs(r.interfaces) do
+      local nx, ny = f.normal[1], f.normal[2]
+      for _, p in ipairs(f.points) do
+        local rel = {}
+        for side, b in ipairs { f.a, f.b } do
+          local u, x, y = r.mechanism[b], centre(b)
+          rel[side] = { u[1] - u[3] * (p[2] - y), u[2] + u[3] * (p[1] - x) }
+        end
+        local dx, dy = rel[2][1] - rel[1][1], rel[2][2] - rel[1][2]
+        local dn, dt = dx * nx + dy * ny, -dx * ny + dy * nx
+        list[#list + 1] = math.max(dn, 0)
+        list[#list + 1] = math.abs(dt)
+        V = math.max(V, math.sqrt(dn * dn + dt * dt))
+      end
+    end
+    local below, above = 0, math.huge
+    for _, v in ipairs(list) do
+      if v < slip * V then below = math.max(below, v / V) else above = math.min(above, v / V) end
+    end
+    return below, above
+  end
+  for _, slip in ipairs { 1e-4, 1e-3 } do
+    local r = solve { slip = slip, progress = false }
+    local e, below, above = r.residuals, motions(r, slip)
+    T.ok(r.verified and math.abs(e.below - below) <= 1e-6 * slip + 1e-12
+         and math.abs(e.above - above) <= 1e-6 * above,
+         ("running bond 12 x 12, mu = 1, slip = %g: the motions nearest the threshold as recomputed from the mechanism (to 1e-6)"):format(slip),
+         ("%.6g %.6g against %.6g %.6g"):format(e.below, e.above, below, above))
+    local noted = tostring(r):find("was taken as none", 1, true) ~= nil
+    T.ok(noted == (below > slip / 100) and (slip == 1e-4) == (below < 1e-12),
+         ("slip = %g: print(r) points out a motion taken as none above slip / 100 only where there is one"):format(slip),
+         ("%g, noted %s"):format(below, tostring(noted)))
+  end
+end
 T.done()
