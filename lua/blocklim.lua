@@ -131,6 +131,7 @@ return function(core)
     M[name] = guard(name, M[name])
   end
 
+  M.help = require("blocklim.help").object(M)
   M.version = "0.1"
   M.clock = core.clock
 
@@ -138,7 +139,7 @@ return function(core)
   -- from a stock Lua may do the same: require("blocklim").globals()).
   local exported = { "model", "block", "contacts", "interface", "load", "solve",
                      "stats", "wall", "arch", "current", "last", "compare", "box", "extrude", "dome", "facade",
-                     "corner", "pier", "bond", "import" }
+                     "corner", "pier", "bond", "import", "help" }
   function M.globals(env)
     env = env or _G
     for _, n in ipairs(exported) do env[n] = M[n] end

@@ -393,6 +393,20 @@ local function velocity_text(u, vmax, wmax)
   return ("vx = %.4g, vy = %.4g, omega = %.4g"):format(c(1, vmax), c(2, vmax), c(3, wmax))
 end
 
+-- A block's velocity by the names it prints with: u.vx, u.vy, u.omega in
+-- 2D; u.vx, u.vy, u.vz, u.wx, u.wy, u.wz, and u.v and u.omega as
+-- {x, y, z}, in 3D.
+local FIELDS2 = { vx = 1, vy = 2, omega = 3 }
+local FIELDS3 = { vx = 1, vy = 2, vz = 3, wx = 4, wy = 5, wz = 6 }
+local function velocity_field(u, k)
+  if rawlen(u) == 6 then
+    if k == "v" then return { rawget(u, 1), rawget(u, 2), rawget(u, 3) } end
+    if k == "omega" then return { rawget(u, 4), rawget(u, 5), rawget(u, 6) } end
+    return FIELDS3[k] and rawget(u, FIELDS3[k])
+  end
+  return FIELDS2[k] and rawget(u, FIELDS2[k])
+end
+
 -- Lists of block numbers made by a generator print as ranges.
 local Blocks = {}
 function Blocks.__tostring(list)
@@ -525,7 +539,8 @@ function report.wrap(r)
       if i <= nv then vmax = math.max(vmax, math.abs(u[i])) else wmax = math.max(wmax, math.abs(u[i])) end
     end
   end
-  local shown = { __tostring = function(u) return velocity_text(u, vmax, wmax) end }
+  local shown = { __tostring = function(u) return velocity_text(u, vmax, wmax) end,
+                  __index = velocity_field }
   for _, u in ipairs(r.mechanism or {}) do setmetatable(u, shown) end
   return setmetatable(r, Result)
 end

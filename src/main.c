@@ -684,11 +684,11 @@ static int print_results(lua_State *L, int base)
 
 static void print_banner(lua_State *L)
 {
-    int has_help = lua_getglobal(L, "help") == LUA_TFUNCTION;
+    int has_help = lua_getglobal(L, "help") != LUA_TNIL;
 
     lua_pop(L, 1);
     printf("%s%s\n", VERSION_LINE,
-           has_help ? " -- type a model; help() lists commands" : "");
+           has_help ? " -- type help for the commands" : "");
     fflush(stdout);
 }
 

@@ -434,4 +434,28 @@ T.eq(message(function() compare { methods = { "mpec", { method = "seqlp", seed =
      "compare: methods[2] (seqlp): solve: field 'seed' must be >= 0, got -1",
      "compare{} with a bad field in its second row: refused naming the row")
 T.ok(last() == before, "... before the first row was solved")
+-- help: every command's fields as its own "unknown field" message lists
+-- them (the two are written apart), and a name it does not know refused
+do
+  local H = require "blocklim.help"
+  for _, c in ipairs(H.commands) do
+    local name, listed = c[1], c[3]
+    if name ~= "compare" then
+      local three = ({ box = 1, extrude = 1, dome = 1, facade = 1, corner = 1, pier = 1, bond = 1 })[name]
+      model { dim = three and 3 or 2 }
+      if name == "interface" then
+        block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+        block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+      end
+      local probe = name == "interface" and { 1, 2, zzz = 1 } or { zzz = 1 }
+      local own = message(function() _G[name](probe) end):match("%(fields: (.-)%)$")
+      T.eq(listed, own, ("help %q lists the fields %s{} accepts"):format(name, name))
+    end
+  end
+  T.ok(tostring(help):find("solve{}", 1, true) and tostring(help):find("doc/guide.md", 1, true),
+       "help at the prompt: the overview, with the guide's name")
+  T.eq(message(function() help "slove" end),
+       "help: no command 'slove' (commands: model, block, wall, arch, import, box, extrude, dome, facade, "
+       .. "corner, pier, bond, contacts, interface, load, solve, compare)", "help \"slove\": the commands named")
+end
 T.done()

@@ -580,4 +580,28 @@ for _, ratio in ipairs { 1e10, 3e11 } do
   end
 end
 
+-- A block rocking about its toe under a load along +x turns about the toe:
+-- with omega its rate of rotation, its centroid moves at omega x (g - toe),
+-- read by the names the mechanism prints with (2D: b x h rocking about
+-- (b, 0), v = (-omega h/2, -omega b/2); 3D: about the edge x = b/2, z = 0
+-- of a box centred on the origin, v = (wy h/2, 0, wy b/2)).
+do
+  local b, h = 0.5, 1.5
+  model { mu = 0.8 }
+  local stone = block { vertices = { { 0, 0 }, { b, 0 }, { b, h }, { 0, h } } }
+  block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+  local u = solve { flow = "associative" }.mechanism[stone]
+  T.ok(u.omega == u[3] and u.omega < 0 and math.abs(u.vx + u.omega * h / 2) <= 1e-9 * math.abs(u.vx)
+       and math.abs(u.vy + u.omega * b / 2) <= 1e-9 * math.abs(u.vx),
+       "2D block rocking about its toe: u.vx = -omega h/2, u.vy = -omega b/2 by name (to 1e-9)",
+       tostring(u))
+  model { dim = 3, mu = 0.8 }
+  box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+  local shaft = box { size = { b, 1, h } }
+  local w = solve { flow = "associative" }.mechanism[shaft]
+  T.ok(w.wy == w[5] and w.omega[2] == w.wy and w.wy > 0 and math.abs(w.v[1] - w.wy * h / 2) <= 1e-9 * w.v[1]
+       and math.abs(w.vz - w.wy * b / 2) <= 1e-9 * w.v[1] and math.abs(w.v[2]) <= 1e-9 * w.v[1],
+       "3D box rocking about its edge: u.v = (wy h/2, 0, wy b/2) by name (to 1e-9)", tostring(w))
+end
+
 T.done()
