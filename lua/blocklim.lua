@@ -11,6 +11,13 @@ return function(core)
   local solve = methods.solve
   function methods.solve(m, t, note)
     local r = solve(m, t, note)
+    -- a cone the method cannot take (the sequence of LPs and Ipopt an even
+    -- number of facets, not adaptive): the one it took, and the one asked
+    local asked = type(t) == "table" and t.cone
+    if asked and r.cone then
+      local a = { facets = asked.facets or 8, kind = asked.kind or "inscribed" }
+      if a.facets ~= r.cone.facets or a.kind ~= r.cone.kind then r.cone.asked = a end
+    end
     return report.wrap(r)
   end
   -- stats() prints as one line at the prompt.

@@ -229,6 +229,11 @@ function Result.__tostring(r)
     else
       say("  friction cone as a pyramid of %d facets, %s%s", c.facets, c.kind, bound)
     end
+    if c.asked then
+      say("  (not the cone asked, %d facets, %s: the %s takes an even number of facets,",
+          c.asked.facets, c.asked.kind, r.method == "mpec" and "direct solve" or "sequence of LPs")
+      say("  inscribed or circumscribed; flow = \"associative\" takes any)")
+    end
   end
   local line = ("  %d block%s, %d support%s, %d interface%s"):format(size.blocks, plural(size.blocks),
     size.supports, plural(size.supports), size.interfaces, plural(size.interfaces))

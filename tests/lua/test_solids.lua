@@ -1025,4 +1025,25 @@ load { live = "horizontal", direction = { math.cos(math.pi / 2), 1 } }
 local ry = solve { cone = { facets = 4, kind = "inscribed" }, progress = false }
 T.ok(ry.certified and math.abs(ry.alpha - 0.4) <= 1e-9, "a box loaded along {cos(pi/2), 1}: certified mu = 0.4",
      ("%s %s"):format(ry.status, tostring(ry.alpha)))
+-- A cone the sequence of LPs cannot take (a 3D tester, 2026-11-29): a
+-- block sliding along 22.5 degrees, between two edges of the octagon the
+-- sequence takes instead of the adaptive cone asked, gives
+-- mu cos(22.5 deg), and the result says which cone it took and that it is
+-- not the one asked; the associative LP takes the adaptive cone: mu.
+do
+  model { dim = 3, mu = 0.6 }
+  box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+  box { size = { 1, 1, 0.5 } }
+  local a = math.rad(22.5)
+  load { live = "horizontal", direction = { math.cos(a), math.sin(a), 0 } }
+  local r = solve { cone = { kind = "adaptive" }, progress = false }
+  T.ok(math.abs(r.alpha - 0.6 * math.cos(a)) <= 1e-9 and r.cone.kind == "inscribed" and r.cone.facets == 8
+       and r.cone.asked and r.cone.asked.kind == "adaptive"
+       and tostring(r):find("not the cone asked, 8 facets, adaptive", 1, true),
+       "3D block sliding at 22.5 deg, cone adaptive asked of the sequence: mu cos 22.5 on the octagon, said so",
+       ("%.9f"):format(r.alpha))
+  local s = solve { cone = { kind = "adaptive" }, flow = "associative" }
+  T.ok(math.abs(s.alpha - 0.6) <= 1e-6 and s.cone.asked == nil and not tostring(s):find("not the cone asked", 1, true),
+       "... the associative LP on the adaptive cone asked: mu (to 1e-6)", ("%.9f"):format(s.alpha))
+end
 T.done()
