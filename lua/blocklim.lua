@@ -78,10 +78,44 @@ return function(core)
     return current
   end
 
+  -- Per model, the block counts before each command that added blocks,
+  -- for undo() (weak keys: a model no longer used goes).
+  local made = setmetatable({}, { __mode = "k" })
+  local function added(m, before)
+    if core.blocks(m) > before then
+      made[m] = made[m] or {}
+      table.insert(made[m], before)
+    end
+  end
+
   for _, name in ipairs { "block", "contacts", "interface", "load", "solve", "stats" } do
     M[name] = function(t)
       return methods[name](need(name), t)
     end
+  end
+  local one_block = M.block
+  function M.block(t)
+    local m = need("block")
+    local before = core.blocks(m)
+    local b = one_block(t)
+    added(m, before)
+    return b
+  end
+
+  -- undo(): the model as it was before the last command that added blocks
+  -- (block, wall, arch, box, import, ...), those blocks gone with the
+  -- loads and joint settings that name them; returns the model.
+  function M.undo()
+    local m = need("undo")
+    local stack, n = made[m] or {}, core.blocks(m)
+    -- (a wall's own blocks were pushed one by one before the wall)
+    while #stack > 0 and stack[#stack] >= n do table.remove(stack) end
+    if #stack == 0 then
+      error("undo: no command has added blocks to this model since it was made (or since the last undo "
+            .. "took them all back)", 2)
+    end
+    core.truncate(m, table.remove(stack))
+    return m
   end
 
   -- load{...} is the DSL's; load("chunk") and load(fn) stay Lua's own.
@@ -113,7 +147,10 @@ return function(core)
       end
       local m, before = current, core.blocks(current)
       local res = table.pack(pcall(f, ...))
-      if res[1] then return table.unpack(res, 2, res.n) end
+      if res[1] then
+        added(m, before)
+        return table.unpack(res, 2, res.n)
+      end
       core.truncate(m, before)
       local msg = res[2]
       if type(msg) ~= "string" then error(msg, 0) end
@@ -146,7 +183,7 @@ return function(core)
   -- from a stock Lua may do the same: require("blocklim").globals()).
   local exported = { "model", "block", "contacts", "interface", "load", "solve",
                      "stats", "wall", "arch", "current", "last", "compare", "box", "extrude", "dome", "facade",
-                     "corner", "pier", "bond", "import", "help" }
+                     "corner", "pier", "bond", "import", "help", "undo" }
   function M.globals(env)
     env = env or _G
     for _, n in ipairs(exported) do env[n] = M[n] end

@@ -49,6 +49,7 @@ local function overview()
     "  stats()      the current model's blocks, supports and interfaces",
     "  current()    the current model; m:block_info(i), m:interface_info(k)",
     "  last()       the latest result, kept also when Ctrl-C stopped a solve",
+    "  undo()       takes back the blocks of the last command that added any",
     "A result r: print(r) (or r at the prompt), r.alpha, r.status, r.mechanism[i],",
     "  r.interfaces[k], r.residuals; r:png(file), r:svg(file), r:json(file), r:vtk(file) (3D)",
     "Tab completes names and fields (r.<Tab>, m:<Tab>).  Ctrl-C stops a solve.",

@@ -261,12 +261,13 @@ function Result.__tostring(r)
       say("    work %s, flow %s, dilatancy %s", g(e.work), g(e.flow), g(e.dilatancy))
       -- the motions nearest the threshold (doc/theory.md 6): round-off
       -- below it, a mechanism's slowest part above
-      say("    motions over the largest: below the threshold at most %s (none), %s", g(e.below),
-          e.above == math.huge and "none above it" or "above it at least " .. g(e.above))
-      if e.below > r.slip / 100 then
+      local m = r.motion_gap
+      say("    motions over the largest: below the threshold at most %s (none), %s", g(m.below),
+          m.above == math.huge and "none above it" or "above it at least " .. g(m.above))
+      if m.below > r.slip / 100 then
         say("    a motion of %s of the largest, above round-off, was taken as none: the answer rests on slip = %s;",
-            g(e.below), g(r.slip))
-        say("    solve again with slip = %s to see whether it holds without that", g(e.below / 10))
+            g(m.below), g(r.slip))
+        say("    solve again with slip = %s to see whether it holds without that", g(m.below / 10))
       end
     else
       say("    complementarity %s, normalization %s, work %s", g(e.complementarity),

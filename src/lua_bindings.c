@@ -1165,10 +1165,14 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
     if (!isnan(s->res.flow)) {
         set_number(L, "flow", s->res.flow);
         set_number(L, "dilatancy", s->res.dilatancy);
-        set_number(L, "below", s->res.below);
-        set_number(L, "above", s->res.above);
     }
     lua_setfield(L, -2, "residuals");
+    if (!isnan(s->res.below)) { /* not residuals: the motions either side of the slip threshold */
+        lua_createtable(L, 0, 2);
+        set_number(L, "below", s->res.below);
+        set_number(L, "above", s->res.above);
+        lua_setfield(L, -2, "motion_gap");
+    }
     if (!bl_solution_moves(s)) return; /* Ipopt's last point, no answer: its residuals only */
 
     push_details(L, s);

@@ -458,4 +458,29 @@ do
        "help: no command 'slove' (commands: model, block, wall, arch, import, box, extrude, dome, facade, "
        .. "corner, pier, bond, contacts, interface, load, solve, compare)", "help \"slove\": the commands named")
 end
+-- undo() (a 3D tester: an overlapping box spoilt the model for good):
+-- the model as before the last command that added blocks, the loads on
+-- them gone, then the one before; with nothing left, an error
+do
+  model { dim = 3, mu = 0.7, density = 20 }
+  box { size = { 3, 3, 0.3 }, at = { 0, 0, -0.3 }, support = true }
+  local shaft = box { size = { 0.5, 1.0, 2.0 } }
+  local alone = solve { flow = "associative" }.alpha
+  box { size = { 0.5, 1, 1 }, at = { 0.2, 0, 1 } }
+  load { live = { block = 3, force = { 1, 0, 0 } } }
+  T.ok(not pcall(solve, {}), "an overlapping box: solve refused")
+  local m = undo()
+  T.ok(m == current() and stats().blocks == 1 and math.abs(solve { flow = "associative" }.alpha - alone) <= 1e-12
+       and math.abs(alone - 0.25) <= 1e-9,
+       "undo(): the overlapping box and its load gone, b/h = 0.25 again", tostring(alone))
+  wall { courses = { { 1, 1 } }, depth = 0.2, unit = { 0.4, 0.2 }, origin = { 2, 0 } }
+  T.ok(stats().blocks == 3, "a wall of two blocks added")
+  undo()
+  T.ok(stats().blocks == 1, "undo(): the wall's two blocks and its base gone together")
+  T.ok(tostring(undo()):find("0 free blocks, 1 support", 1, true) and tostring(undo()):find("0 free blocks, 0 supports", 1, true),
+       "undo(), undo(): the shaft, then the base", tostring(current()))
+  T.eq(message(function() undo() end),
+       "undo: no command has added blocks to this model since it was made (or since the last undo took them all back)",
+       "undo() with nothing to take back: refused, the model kept")
+end
 T.done()

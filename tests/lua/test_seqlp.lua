@@ -702,7 +702,7 @@ do
          ("%s %s"):format(r.status, tostring(r.alpha)))
   end
 end
--- The motions nearest the slip threshold (doc/theory.md 6): r.residuals.below
+-- The motions nearest the slip threshold (doc/theory.md 6): r.motion_gap.below
 -- is the largest relative motion taken as none and .above the least
 -- counted, over the largest, recomputed here from the blocks' velocities
 -- and the joints' ends.  The running bond of 12 x 12 at mu = 1 with
@@ -743,7 +743,7 @@ do
   end
   for _, slip in ipairs { 1e-4, 1e-3 } do
     local r = solve { slip = slip, progress = false }
-    local e, below, above = r.residuals, motions(r, slip)
+    local e, below, above = r.motion_gap, motions(r, slip)
     T.ok(r.verified and math.abs(e.below - below) <= 1e-6 * slip + 1e-12
          and math.abs(e.above - above) <= 1e-6 * above,
          ("running bond 12 x 12, mu = 1, slip = %g: the motions nearest the threshold as recomputed from the mechanism (to 1e-6)"):format(slip),
