@@ -675,6 +675,17 @@ static void *certify_beside(void *arg)
     return NULL;
 }
 
+/* The options the fixed LPs are made with: o's, except that a 3D one
+ * with more than BL_SEQLP_IPM_COLUMNS3 columns and 5 per row takes the
+ * interior point where "auto" would take the simplex (seqlp.h). */
+static bl_solve_options fixed_options(const bl_system *f, const bl_solve_options *o)
+{
+    bl_solve_options fo = *o;
+    if (f->dim == 3 && o->lp == BL_LP_AUTO && f->ncols > BL_SEQLP_IPM_COLUMNS3 && f->ncols > 5 * f->nrows)
+        fo.lp = BL_LP_IPM;
+    return fo;
+}
+
 /* Whether the certificate of a settled LP can run beside the next fixed
  * LP: both on the interior point, each leaving the other a core (lp.h),
  * and no verbose lines to interleave.  Most certificates fail and the next
@@ -685,7 +696,7 @@ static int certify_ahead(const run *r, const bl_seqlp_options *o)
     const bl_solve_options *b = &o->base;
     return !b->verbose && strcmp(bl_lp_engine(r->lp_fixed), "ipm") == 0 &&
            bl_lp_choose(b->lp, r->cone->nrows, r->cone->ncols) == BL_LP_IPM &&
-           bl_lp_leaves_core(b->lp, b->threads, r->fixed->nrows, r->fixed->ncols) &&
+           bl_lp_leaves_core(fixed_options(r->fixed, b).lp, b->threads, r->fixed->nrows, r->fixed->ncols) &&
            bl_lp_leaves_core(b->lp, b->threads, r->cone->nrows, r->cone->ncols);
 }
 
@@ -760,6 +771,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
                      bl_lp_status *stop, bl_error *err)
 {
     const bl_system *f = r->fixed;
+    bl_solve_options fo = fixed_options(f, &o->base);
     *stop = BL_LP_OPTIMAL;
     double beta = ss->beta, last = ss->last, prev = ss->prev;
     int turns = ss->turns;
@@ -772,7 +784,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
         if (!ahead) {
             fixed_bounds(r);
             if (!r->lp_fixed) {
-                r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
+                r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &fo, err);
                 if (!r->lp_fixed) return -1;
                 if (r->warm) path_warm(r->warm, r->lp_fixed);
                 r->warm = NULL;
@@ -801,7 +813,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
                 fprintf(stderr, "seqlp start %d LP %d: no convergence, again with the least normal "
                                 "force\n", start_number(s), j + 1);
             bl_lp_free(r->lp_fixed);
-            r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &o->base, err);
+            r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &fo, err);
             if (!r->lp_fixed) return -1;
             st = bl_lp_solve(r->lp_fixed);
         }
@@ -1468,7 +1480,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         if (!rl.system) goto fail;
         rl.lp = bl_solve_lp(rl.system, rl.system->lo, rl.system->hi, NULL, &o->base, err);
         if (rl.lp && !o->base.verbose && strcmp(bl_lp_engine(rl.lp), "ipm") == 0 &&
-            bl_lp_leaves_core(o->base.lp, o->base.threads, r.fixed->nrows, r.fixed->ncols))
+            bl_lp_leaves_core(fixed_options(r.fixed, &o->base).lp, o->base.threads, r.fixed->nrows, r.fixed->ncols))
             r.rigid_beside = pthread_create(&r.rigid_thread, NULL, solve_rigid, &rl) == 0;
         if (rl.lp && !r.rigid_beside) solve_rigid(&rl);
     }

@@ -166,6 +166,15 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * it ends at step 37, products 0.45. */
 #define BL_SEQLP_PATH_ROWS 20000
 
+/* With lp = "auto", a 3D fixed LP of more columns than this and 5 per
+ * row runs on the interior point, where any other LP of its size would
+ * take the simplex (lp.h): re-solved after its bounds change, the simplex
+ * took about 1,000 pivots per LP on 200 rows (W1 in 3D at mu = 2: 348,559
+ * for 327 LPs, 16 s, against 1.6 s; a vault of 36 voussoirs pushed along
+ * its axis 26 s against 1.5 s); the pier of 72 rows and 561 columns keeps
+ * the simplex, 0.5 s against 1.6 s (doc/seqlp.md 18). */
+#define BL_SEQLP_IPM_COLUMNS3 1000
+
 /* The pyramid the 3D sequence of LPs (and the direct solve) runs on: the
  * one asked for when it has an even number of facets (its section at n is
  * then the fixed form's polygon of shears), else the 8-facet inscribed one. */
