@@ -15,7 +15,7 @@ return function(core)
     -- number of facets, not adaptive): the one it took, and the one asked
     local asked = type(t) == "table" and t.cone
     if asked and r.cone then
-      local a = { facets = asked.facets or 8, kind = asked.kind or "inscribed" }
+      local a = { facets = asked.facets or r.cone.facets, kind = asked.kind or r.cone.kind }
       if a.facets ~= r.cone.facets or a.kind ~= r.cone.kind then r.cone.asked = a end
     end
     return report.wrap(r)
@@ -93,20 +93,19 @@ return function(core)
       return methods[name](need(name), t)
     end
   end
-  local one_block = M.block
-  function M.block(t)
-    local m = need("block")
+  -- m:block{} and block{}, which calls it
+  local one_block = methods.block
+  function methods.block(m, t)
     local before = core.blocks(m)
-    local b = one_block(t)
+    local b = one_block(m, t)
     added(m, before)
     return b
   end
 
-  -- undo(): the model as it was before the last command that added blocks
-  -- (block, wall, arch, box, import, ...), those blocks gone with the
-  -- loads and joint settings that name them; returns the model.
-  function M.undo()
-    local m = need("undo")
+  -- m:undo() and undo(): model m as it was before the last command that
+  -- added blocks to it (block, wall, arch, box, import, ...), those blocks
+  -- gone with the loads and joint settings that name them; returns m.
+  function methods.undo(m)
     local stack, n = made[m] or {}, core.blocks(m)
     -- (a wall's own blocks were pushed one by one before the wall)
     while #stack > 0 and stack[#stack] >= n do table.remove(stack) end
@@ -117,6 +116,7 @@ return function(core)
     core.truncate(m, table.remove(stack))
     return m
   end
+  function M.undo() return methods.undo(need("undo")) end
 
   -- load{...} is the DSL's; load("chunk") and load(fn) stay Lua's own.
   local lua_load, dsl_load = load, M.load
@@ -137,11 +137,12 @@ return function(core)
   -- module's file and line, and starting with the command's name; the
   -- blocks it had made are removed, so the model is as it was.
   local commands = { block = true, model = true, contacts = true, interface = true, load = true }
+  local help = require "blocklim.help"
+  local solid = {} -- the commands of 3D models alone
+  for _, c in ipairs(help.commands) do solid[c[1]] = c.dim3 end
   local function guard(name, f)
     return function(...)
       if not current then
-        local solid = { box = true, extrude = true, dome = true, facade = true, corner = true, pier = true,
-                        bond = true }
         error(name .. ": no current model; start one with model{ " .. (solid[name] and "dim = 3, " or "")
               .. "mu = 0.65 }", 2)
       end
@@ -175,7 +176,7 @@ return function(core)
     M[name] = guard(name, M[name])
   end
 
-  M.help = require("blocklim.help").object(M)
+  M.help = help.object(M)
   M.version = "0.1"
   M.clock = core.clock
 

@@ -16,18 +16,18 @@ local COMMANDS = {
     "angle, centre, density, fill, length, n, radius, segments, span, springings, thickness", "4" },
   { "import", "blocks from a DXF or OBJ drawing",
     "arc_step, density, file, format, layers, plane, scale, support, thickness", "4" },
-  { "box", "3D: a box", "at, density, size, support", "4, 3D models" },
+  { "box", "3D: a box", "at, density, size, support", "4, 3D models", dim3 = true },
   { "extrude", "3D: a polygon extruded along an axis", "axis, density, from, polygon, support, to",
-    "4, 3D models" },
+    "4, 3D models", dim3 = true },
   { "dome", "3D: a dome of rings of voussoirs", "base, centre, density, radius, rings, segments, thickness",
-    "4, 3D models" },
+    "4, 3D models", dim3 = true },
   { "facade", "3D: a facade with return walls, openings and lintels",
-    "at, base, courses, density, length, lintel, openings, returns, thickness, unit", "4, 3D models" },
+    "at, base, courses, density, length, lintel, openings, returns, thickness, unit", "4, 3D models", dim3 = true },
   { "corner", "3D: two walls meeting at a corner", "at, base, courses, density, lengths, thickness, unit",
-    "4, 3D models" },
-  { "pier", "3D: a pier of courses", "at, base, courses, density, height, size", "4, 3D models" },
+    "4, 3D models", dim3 = true },
+  { "pier", "3D: a pier of courses", "at, base, courses, density, height, size", "4, 3D models", dim3 = true },
   { "bond", "3D: a brick wall in English, header or stretcher bond",
-    "at, base, courses, density, length, lintel, openings, pattern, thickness, unit", "4, 3D models" },
+    "at, base, courses, density, length, lintel, openings, pattern, thickness, unit", "4, 3D models", dim3 = true },
   { "contacts", "detect the interfaces (solve{} does it when needed)", "tol, gap", "4" },
   { "interface", "change or declare the joint between blocks a and b: interface{ a, b, ... }",
     "mu, cohesion, points, model, mu_t", "4" },
@@ -39,17 +39,20 @@ local COMMANDS = {
     "5" },
   { "compare", "solve by several methods and set the answers side by side",
     "methods, and the fields of solve{}", "5" },
+  -- without fields
+  { "stats", "the current model's blocks, supports and interfaces", nil, "4", call = "()" },
+  { "current", "the current model; m:block_info(i), m:interface_info(k)", nil, "4", call = "()" },
+  { "last", "the latest result, kept also when Ctrl-C stopped a solve", nil, "5", call = "()" },
+  { "undo", "takes back the blocks of the last command that added any (also m:undo())", nil, "4",
+    call = "()" },
+  { "help", "this list; help \"solve\" one command", nil, "2", call = "" },
 }
 help.commands = COMMANDS
 
 local function overview()
   local out = { "Commands (each takes one table of named fields; help \"solve\" lists one's fields):" }
-  for _, c in ipairs(COMMANDS) do out[#out + 1] = ("  %-12s %s"):format(c[1] .. "{}", c[2]) end
+  for _, c in ipairs(COMMANDS) do out[#out + 1] = ("  %-12s %s"):format(c[1] .. (c.call or "{}"), c[2]) end
   for _, line in ipairs {
-    "  stats()      the current model's blocks, supports and interfaces",
-    "  current()    the current model; m:block_info(i), m:interface_info(k)",
-    "  last()       the latest result, kept also when Ctrl-C stopped a solve",
-    "  undo()       takes back the blocks of the last command that added any",
     "A result r: print(r) (or r at the prompt), r.alpha, r.status, r.mechanism[i],",
     "  r.interfaces[k], r.residuals; r:png(file), r:svg(file), r:json(file), r:vtk(file) (3D)",
     "Tab completes names and fields (r.<Tab>, m:<Tab>).  Ctrl-C stops a solve.",
@@ -64,12 +67,13 @@ local function one(name)
     if c[1] == name then
       -- the fields wrapped at about 90 columns
       local lines, line = {}, "  fields:"
-      for f in c[3]:gmatch("[^,]+,?") do
+      for f in (c[3] or "none"):gmatch("[^,]+,?") do
         if #line + #f > 90 then lines[#lines + 1], line = line, "   " end
         line = line .. " " .. f:gsub("^%s+", "")
       end
       lines[#lines + 1] = line
-      return ("%s{}: %s\n%s\n  doc/guide.md section %s"):format(c[1], c[2], table.concat(lines, "\n"), c[4])
+      return ("%s%s: %s\n%s\n  doc/guide.md section %s"):format(c[1], c.call or "{}", c[2],
+                                                                table.concat(lines, "\n"), c[4])
     end
   end
   local names = {}
@@ -84,10 +88,13 @@ function help.object(globals)
     __tostring = overview,
     __call = function(_, what)
       if what == nil then print(overview()) return end
-      if type(what) == "function" then
+      if type(what) == "function" or type(what) == "table" then
+        local found
         for _, c in ipairs(COMMANDS) do
-          if globals[c[1]] == what then what = c[1] break end
+          if globals[c[1]] == what then found = c[1] break end
         end
+        if not found then error("help: that is not a blocklim command (help lists them)", 2) end
+        what = found
       end
       print(one(what))
     end,

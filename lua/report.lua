@@ -166,9 +166,12 @@ function Result.__tostring(r)
       local h = r.history[k]
       if #h > 1 then last[st.continues or k] = h[#h] end
     end
-    local stops = {}
+    local stops, above = {}, false
     for k = 1, #r.starts do
-      if last[k] then stops[#stops + 1] = ("%.6g"):format(last[k]) end
+      if last[k] then
+        stops[#stops + 1] = ("%.6g"):format(last[k])
+        above = above or last[k] > r.alpha_assoc
+      end
     end
     if #stops > 0 then
       say("  where %s stopped, an LP of fixed capacities, which bounds nothing:",
@@ -176,6 +179,11 @@ function Result.__tostring(r)
       for i = 1, #stops, 6 do
         say("  %s %s", i == 1 and "alpha" or "     ",
             table.concat(stops, ", ", i, math.min(i + 5, #stops)))
+      end
+      if above then
+        -- (the associative alpha bounds the answer, not these LPs)
+        say("  (above the associative alpha, as they may be: their capacities are the relaxed normal")
+        say("  forces times mu, fixed, where Coulomb's law ties friction to each LP's own forces)")
       end
     end
     if r.status == "not certified" and not (r.note and r.note:find("no equilibrium", 1, true)) then
@@ -232,7 +240,7 @@ function Result.__tostring(r)
     if c.asked then
       say("  (not the cone asked, %d facets, %s: the %s takes an even number of facets,",
           c.asked.facets, c.asked.kind, r.method == "mpec" and "direct solve" or "sequence of LPs")
-      say("  inscribed or circumscribed; flow = \"associative\" takes any)")
+      say("  inscribed or circumscribed; more of them come nearer the cone: cone = { facets = 16 })")
     end
   end
   local line = ("  %d block%s, %d support%s, %d interface%s"):format(size.blocks, plural(size.blocks),
@@ -261,7 +269,7 @@ function Result.__tostring(r)
       say("    work %s, flow %s, dilatancy %s", g(e.work), g(e.flow), g(e.dilatancy))
       -- the motions nearest the threshold (doc/theory.md 6): round-off
       -- below it, a mechanism's slowest part above
-      local m = r.motion_gap
+      local m = r.motion_gap or { below = 0 / 0, above = 0 / 0 } -- (NaN: not computed)
       say("    motions over the largest: below the threshold at most %s (none), %s", g(m.below),
           m.above == math.huge and "none above it" or "above it at least " .. g(m.above))
       if m.below > r.slip / 100 then

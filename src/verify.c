@@ -234,6 +234,7 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         }
     double adm = 0.0, comp = 0.0, flow = 0.0, dil = 0.0, dissipation = 0.0;
     double below = 0.0, above = INFINITY;
+    int unknown = 0;
     for (int p = 0; p < np; p++) {
         double R = isinf(cone->mu[p]) ? 0.0 : cone->mu[p] * n[p] + cone->cohesion[p];
         adm = fmax(adm, -dn[p] / V);
@@ -251,7 +252,8 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
         double m[4] = {fmax(dn[p], 0.0), speed[cone->lead[p]], slide[p], fmax(open[p], 0.0)};
         for (int k = 0; k < 4; k++) {
             if (m[k] < slip * V) below = fmax(below, m[k] / V);
-            else above = fmin(above, m[k] / V);
+            else if (m[k] >= slip * V) above = fmin(above, m[k] / V);
+            else unknown = 1; /* a motion that is not a number: neither is known */
         }
     }
     /* rigid joints (mu = inf): no force where the joint slides (the flow
@@ -271,8 +273,8 @@ int bl_verify_nonassoc(const bl_system *cone, const bl_system *fixed, double alp
     work(cone, alpha, y, dissipation, res);
     res->flow = flow;
     res->dilatancy = dil;
-    res->below = below;
-    res->above = above;
+    res->below = unknown ? NAN : below;
+    res->above = unknown ? NAN : above;
     free(w);
     free(buf);
     free(S);

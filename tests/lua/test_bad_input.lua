@@ -440,9 +440,8 @@ do
   local H = require "blocklim.help"
   for _, c in ipairs(H.commands) do
     local name, listed = c[1], c[3]
-    if name ~= "compare" then
-      local three = ({ box = 1, extrude = 1, dome = 1, facade = 1, corner = 1, pier = 1, bond = 1 })[name]
-      model { dim = three and 3 or 2 }
+    if name ~= "compare" and listed then
+      model { dim = c.dim3 and 3 or 2 }
       if name == "interface" then
         block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
         block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
@@ -456,7 +455,11 @@ do
        "help at the prompt: the overview, with the guide's name")
   T.eq(message(function() help "slove" end),
        "help: no command 'slove' (commands: model, block, wall, arch, import, box, extrude, dome, facade, "
-       .. "corner, pier, bond, contacts, interface, load, solve, compare)", "help \"slove\": the commands named")
+       .. "corner, pier, bond, contacts, interface, load, solve, compare, stats, current, last, undo, help)",
+       "help \"slove\": the commands named")
+  T.eq(message(function() help(print) end), "help: that is not a blocklim command (help lists them)",
+       "help(print): not a command of blocklim")
+  T.ok(tostring(help):find("undo()", 1, true), "help lists undo()")
 end
 -- undo() (a 3D tester: an overlapping box spoilt the model for good):
 -- the model as before the last command that added blocks, the loads on
@@ -477,10 +480,27 @@ do
   T.ok(stats().blocks == 3, "a wall of two blocks added")
   undo()
   T.ok(stats().blocks == 1, "undo(): the wall's two blocks and its base gone together")
-  T.ok(tostring(undo()):find("0 free blocks, 1 support", 1, true) and tostring(undo()):find("0 free blocks, 0 supports", 1, true),
-       "undo(), undo(): the shaft, then the base", tostring(current()))
+  local shaftless = tostring(undo())
+  local empty = tostring(undo())
+  T.ok(shaftless:find("0 free blocks, 1 support", 1, true) and empty:find("0 free blocks, 0 supports", 1, true),
+       "undo(), undo(): the shaft, then the base", shaftless .. " | " .. empty)
   T.eq(message(function() undo() end),
        "undo: no command has added blocks to this model since it was made (or since the last undo took them all back)",
        "undo() with nothing to take back: refused, the model kept")
+  -- m:block{} counts as a command of its own; a wall that fails adds
+  -- nothing to take back; a joint setting naming a block taken back goes
+  local m = model { mu = 0.6 }
+  block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+  block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+  local other = model { mu = 0.6 }
+  m:block { vertices = { { 0, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } } }
+  m:interface { 2, 3, mu = 0.1 }
+  T.ok(not pcall(wall, { courses = { { 1, "x" } }, unit = { 0.4, 0.2 } }), "a wall refused midway")
+  T.ok(current() == other and m:undo() == m and m:stats().blocks == 1
+       and math.abs(m:solve { flow = "associative" }.alpha - 0.6) <= 1e-9,
+       "m:undo() on a model not current: the block m:block{} added, and its joint setting, gone (min(mu, b/h) = 0.6 again)")
+  T.eq(message(function() undo() end),
+       "undo: no command has added blocks to this model since it was made (or since the last undo took them all back)",
+       "... and undo() of the current model, whose wall failed: nothing to take back")
 end
 T.done()
