@@ -43,7 +43,14 @@ function Result.__tostring(r)
   elseif r.status == "optimal" and r.stands == nil then
     say("  (whether the dead load alone has an equilibrium was not decided: its LP stopped short)")
   end
-  if r.note and (not r.certified or r.interrupted or r.time_up) then say("  %s", r.note) end
+  if r.note and (not r.certified or r.interrupted or r.time_up) then
+    say("  %s", r.note)
+    if not r.certified and r.note:find("had no equilibrium with the relaxed friction", 1, true) then
+      -- the known case (doc/seqlp.md, "Where the method fails or is slow")
+      say("  (usually a block held up by the friction of its head joints alone, over an opening that")
+      say("  no block spans from jamb to jamb; with a lintel there the sequence certifies, as on W4)")
+    end
+  end
   if r.dead and r.dead.mechanism then
     local most = r.dead.alpha > 1e-9 and ("at most %.6g times it"):format(r.dead.alpha) or "no part of it"
     say("  the dead load alone has no equilibrium (the model carries %s); r.dead, the", most)

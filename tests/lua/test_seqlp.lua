@@ -372,6 +372,17 @@ T.ok(not tostring(r):find("solve again", 1, true)
      and solve { flow = "nonassociative", settle = 1e-3 }.status == "not certified"
      and solve { flow = "nonassociative", lps = 300 }.status == "not certified",
      "no lintel: print(r) suggests no other settings, and settle = 1e-3 or lps = 300 would not certify")
+-- ... print(r) names the usual cause, and the same wall with a block over
+-- the opening from jamb to jamb (0.5, 2, 0.5 in the top course) certifies
+T.ok(tostring(r):find("held up by the friction of its head joints alone", 1, true),
+     "no lintel: print(r) names the usual cause")
+do
+  model { mu = 0.65 }
+  wall { courses = { { 1, 1, 1 }, { 1, -1, 1 }, { 1, -1, 1 }, { 0.5, 2, 0.5 } }, unit = { 0.4, 0.175 } }
+  local l = solve { progress = false }
+  T.ok(l.certified and l.verified and l.alpha <= l.alpha_assoc,
+       "the same opening with a lintel block resting on both jambs: certified", ("%s %.6f"):format(l.status, l.alpha))
+end
 -- ... and where its starts stopped lies above the associative alpha, which
 -- print(r) explains (a tester took it for a contradiction)
 local over = false
