@@ -560,8 +560,11 @@ function report.wrap(r)
       if i <= nv then vmax = math.max(vmax, math.abs(u[i])) else wmax = math.max(wmax, math.abs(u[i])) end
     end
   end
+  local three = r.mechanism and r.mechanism[1] and #r.mechanism[1] == 6
   local shown = { __tostring = function(u) return velocity_text(u, vmax, wmax) end,
-                  __index = velocity_field }
+                  __index = velocity_field, -- and for Tab (src/main.c):
+                  __fields = three and { "vx", "vy", "vz", "wx", "wy", "wz", "v", "omega" }
+                                   or { "vx", "vy", "omega" } }
   for _, u in ipairs(r.mechanism or {}) do setmetatable(u, shown) end
   return setmetatable(r, Result)
 end

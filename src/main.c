@@ -398,6 +398,29 @@ static void add_table_keys(lua_State *L, struct candidates *c,
     }
 }
 
+/* Adds the names in the __fields list of the metatable of the table on
+ * top that extend partial: fields an __index function gives (a
+ * mechanism entry's vx, vy, omega), which completion cannot call. */
+static void add_listed_fields(lua_State *L, struct candidates *c, const char *prefix,
+                              size_t prefix_len, const char *partial)
+{
+    size_t plen = strlen(partial);
+
+    if (!lua_getmetatable(L, -1))
+        return;
+    lua_pushliteral(L, "__fields");
+    if (lua_rawget(L, -2) == LUA_TTABLE) {
+        for (lua_Integer i = 1; lua_rawgeti(L, -1, i) == LUA_TSTRING; i++) {
+            const char *name = lua_tostring(L, -1);
+            if (strncmp(name, partial, plen) == 0 && is_identifier(name))
+                add_candidate(c, prefix, prefix_len, name);
+            lua_pop(L, 1);
+        }
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 2);
+}
+
 /* Protected part of completion.  The word begins after the last '[' left
  * open (t[na completes a global); it is split at its last '.' or ':'
  * outside brackets; the part before is walked from the globals through
@@ -453,9 +476,11 @@ static int collect_completions(lua_State *L)
         partial = sep + 1;
     }
     for (depth = 0; depth < MAX_INDEX_DEPTH; depth++) {
-        if (lua_type(L, -1) == LUA_TTABLE)
+        if (lua_type(L, -1) == LUA_TTABLE) {
             add_table_keys(L, comp->out, text, (size_t)(partial - text),
                            partial, sep != NULL && *sep == ':');
+            add_listed_fields(L, comp->out, text, (size_t)(partial - text), partial);
+        }
         if (!step_index_chain(L))
             break;
     }

@@ -198,7 +198,16 @@ LUA
   sleep 0.3
   tmux send-keys -t "$s" ' + 2)' Enter
   sleep 1
-  screen=$(tmux capture-pane -p -t "$s")
+  # ... and a name a mechanism entry gives by its __index function
+  tmux send-keys -t "$s" 'model { mu = 0.6 }; block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 2 }, { 0, 2 } } }' Enter
+  tmux send-keys -t "$s" 'block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }' Enter
+  tmux send-keys -t "$s" 'r1 = solve { flow = "associative" }' Enter
+  sleep 1
+  tmux send-keys -t "$s" 'print("named", r1.mechanism[1].om' Tab
+  sleep 0.3
+  tmux send-keys -t "$s" ' < 0)' Enter
+  sleep 1
+  screen=$(tmux capture-pane -p -S -60 -t "$s")
   tmux kill-session -t "$s" 2>/dev/null
   check "Ctrl-C stops a solve by either engine and returns to the prompt" \
     test "$(grep -c 'solve: interrupted' <<<"$screen")" -eq 2
@@ -210,6 +219,8 @@ LUA
     bash -c 'grep -q "^COMPLETED" <<<"$1" && ! grep -q ":dofile" <<<"$1"' _ "$screen"
   check "Tab completes a field past a literal index (xs[1].alp to xs[1].alpha)" \
     grep -qE '^indexed[[:space:]]+42' <<<"$screen"
+  check "Tab completes a mechanism entry's name (r1.mechanism[1].om to .omega, a block turning clockwise)" \
+    grep -qE '^named[[:space:]]+true' <<<"$screen"
 
   # Ctrl-C during a long sequence of LPs (W4 with very many restarts): the
   # chunk stops, and the lowest certified answer so far is kept in last().
