@@ -305,6 +305,7 @@ return function(M)
     if not text then fail(("field 'file': cannot read '%s': %s"):format(t.file, tostring(err))) end
     local function where(line) return ("'%s' line %d"):format(t.file, line) end
     text = text:gsub("^\239\187\191", ""):gsub("\r\n?", "\n") -- a byte-order mark; CR LF or CR alone
+    if not text:find("%S") then fail(("field 'file': '%s' is empty"):format(t.file)) end
 
     local shapes, skipped, digits, units
     if format == "obj" then
@@ -318,6 +319,7 @@ return function(M)
     end
     -- field 'layers': only the shapes whose names it matches; the others
     -- are left out, by line
+    local left = {} -- the shapes 'layers' leaves out
     if layers then
       local kept, names, seen = {}, {}, {}
       for _, s in ipairs(shapes) do
@@ -326,6 +328,7 @@ return function(M)
         if is then
           kept[#kept + 1] = s
         else
+          left[#left + 1] = s
           skipped[#skipped + 1] = ("line %d: %s '%s', not in 'layers'"):format(s.line,
             format == "dxf" and "layer" or "object", s.name)
         end
@@ -387,7 +390,18 @@ return function(M)
       any = any or marks[i]
     end
     if t.support ~= nil and not any then
-      local names, seen = {}, {}
+      -- a support among the shapes 'layers' leaves out
+      local out, seen = {}, {}
+      for _, s in ipairs(left) do
+        local ok, is = pcall(support, s.name)
+        if ok and is and not seen[s.name] and #out < 8 then out[#out + 1], seen[s.name] = ("'%s'"):format(s.name), true end
+      end
+      if #out > 0 then
+        fail(("field 'support' matches only names that field 'layers' leaves out (%s): the supports are "
+              .. "blocks too, so 'layers' must keep them"):format(table.concat(out, ", ")))
+      end
+      local names
+      names, seen = {}, {}
       for _, s in ipairs(shapes) do
         if not seen[s.name] and #names < 8 then names[#names + 1], seen[s.name] = ("'%s'"):format(s.name), true end
       end

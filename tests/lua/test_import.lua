@@ -661,6 +661,11 @@ refused(2, { file = framed }, "a frame around the drawing", "has a corner inside
         "'layers'")
 refused(2, { file = framed, layers = "wall" }, "layers that match no name", "field 'layers' matches no name",
         "'frame', 'stone', 'base'")
+-- (a tester: 'layers' that leave out the support's layer were answered
+-- with "support matches no name", listing only the layers kept)
+refused(2, { file = framed, layers = "stone", support = "base" }, "layers that leave out the support",
+        "field 'support' matches only names that field 'layers' leaves out ('base')", "'layers' must keep them")
+refused(2, { file = write(".dxf", "\n  \n") }, "an empty file", "import: field 'file': '", "' is empty")
 -- ... but stones that split a seat's arc where the seat's chords do not
 -- (their own chords lie up to a sagitta inside the seat's) are no overlap
 -- (a reviewer found them refused)
