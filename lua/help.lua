@@ -35,7 +35,8 @@ local COMMANDS = {
     "dead, live, direction, tilt, axis", "4" },
   { "solve", "the collapse multiplier and mechanism: r = solve{}",
     "flow, method, lp, tolerance, time_limit, iterations, verbose, mps, beta, settle, slip, lps, "
-    .. "starts, seed, progress, start, penalty, complementarity, cone, threads, lp_tolerance, nearest, path",
+    .. "starts, seed, progress, start, penalty, complementarity, cone, threads, lp_tolerance, nearest, path, "
+    .. "mechanisms",
     "5" },
   { "compare", "solve by several methods and set the answers side by side",
     "methods, and the fields of solve{}", "5" },

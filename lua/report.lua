@@ -108,7 +108,11 @@ function Result.__tostring(r)
     if near > 0 then
       say("  %d certificates tried; the nearest forces after %d that failed", tried, near)
     end
-    if r.certified_early then
+    if r.from_mechanism then
+      say("  certified from the mechanism of mechanisms[%d], the result given (alpha %.6g there),",
+          r.from_mechanism, r.alpha_settled)
+      say("  below what the starts certified: a solution from %.6g", r.alpha)
+    elseif r.certified_early then
       say("  certified from an LP at %.6g, before its sequence settled (below the lowest alpha",
           r.alpha_settled)
       say("  certified until then); its mechanism is a solution from %.6g", r.alpha)

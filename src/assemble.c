@@ -445,6 +445,19 @@ void bl_system_mechanism(const bl_system *s, const bl_model *m, const double *y,
     }
 }
 
+void bl_system_rows_of_mechanism(const bl_system *s, const bl_model *m, const double *u, double *y)
+{
+    int per = s->dim == 3 ? 6 : 3, forces = s->dim == 3 ? 3 : 2; /* rows per block; force rows */
+    for (int i = 0; i < m->nblocks; i++) {
+        int r = s->block_row[i];
+        if (r < 0) continue;
+        for (int c = 0; c < per; c++) {
+            double v = u[per * i + c] * (c < forces ? s->W0 : s->W0 * s->L0);
+            y[r + c] = s->row_scale ? v / s->row_scale[r + c] : v;
+        }
+    }
+}
+
 void bl_system_residual(const bl_system *s, const double *x, double alpha, double *r)
 {
     for (int i = 0; i < s->nrows; i++) r[i] = -s->rhs[i];

@@ -183,6 +183,11 @@ void bl_system_forces(const bl_system *s, const bl_model *m, const double *x, do
 /* Physical mechanism (vx, vy, omega per block) from the row multipliers y. */
 void bl_system_mechanism(const bl_system *s, const bl_model *m, const double *y, double *u);
 
+/* The other way: the row multipliers y of a mechanism u given per block
+ * (3 numbers in 2D, 6 in 3D, as bl_system_mechanism and
+ * bl_system_mechanism3 give them). */
+void bl_system_rows_of_mechanism(const bl_system *s, const bl_model *m, const double *u, double *y);
+
 /* obj[j] -= eps n_j over the force columns, n_j the normal force of a unit
  * of column j (in units of W0): with eps > 0 an LP that maximizes obj takes,
  * among its optimal force fields, one with less total normal force.  Blocks

@@ -1060,6 +1060,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
         if (s->certified) {
             set_number(L, "alpha_settled", s->alpha_settled);
             set_boolean(L, "certified_early", s->early);
+            if (s->given) set_integer(L, "from_mechanism", s->given);
         }
         set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
         if (s->restarts_why) set_string(L, "restarts_why", s->restarts_why);
@@ -1289,6 +1290,47 @@ static int interrupted(lua_State *L, const char *note, const char *fmt, ...)
     return lua_error(L);
 }
 
+/* solve{ mechanisms = { r1, r2, ... } }, its value on top: results of
+ * models with the blocks of m (as many, the same ones supports), whose
+ * mechanisms the sequence tries as certificates (seqlp.h).  The arrays
+ * live in a userdata left on the stack above the list, which keeps the
+ * results alive. */
+static void mechanisms_field(lua_State *L, bl_model *m, bl_seqlp_options *so)
+{
+    int list = lua_gettop(L);
+    if (!lua_istable(L, list))
+        fail(L, "solve: field 'mechanisms' must be a list of results, got %s", luaL_typename(L, list));
+    int n = (int)luaL_len(L, list);
+    if (n < 1 || n > 1000)
+        fail(L, "solve: field 'mechanisms' must list from 1 to 1000 results, got %d", n);
+    const double **u = lua_newuserdatauv(L, (size_t)n * (sizeof *u + sizeof(double)), 0);
+    double *alpha = (double *)(u + n);
+    for (int k = 0; k < n; k++) {
+        lua_geti(L, list, k + 1);
+        bl_solution **box = NULL;
+        if (lua_istable(L, -1) && lua_getfield(L, -1, "_solution") == LUA_TUSERDATA)
+            box = luaL_testudata(L, -1, SOLUTION_MT);
+        const bl_solution *r = box ? *box : NULL;
+        if (!r) fail(L, "solve: field 'mechanisms' entry %d must be a result of solve{}", k + 1);
+        if (!bl_solution_moves(r))
+            fail(L, "solve: field 'mechanisms' entry %d has no mechanism (its status: %s)", k + 1,
+                 bl_status_name(r->status));
+        const bl_model *rm = r->model;
+        int same = rm->dim == m->dim && rm->nblocks == m->nblocks;
+        for (int b = 0; same && b < m->nblocks; b++) same = rm->blocks[b].support == m->blocks[b].support;
+        if (!same)
+            fail(L, "solve: field 'mechanisms' entry %d is a result of a model with other blocks (%d, "
+                    "against this model's %d, or other supports): a mechanism is given per block",
+                 k + 1, rm->nblocks, m->nblocks);
+        u[k] = r->u;
+        alpha[k] = r->alpha;
+        lua_pop(L, 2);
+    }
+    so->nmechanisms = n;
+    so->mechanisms = u;
+    so->mechanism_alpha = alpha;
+}
+
 /* m:solve(t[, note]): note, a string, ends the message of an interruption
  * (compare{}'s row).  With check set, only the checks of m and t, which
  * refuse what the solve would (compare{} checks every row first). */
@@ -1298,7 +1340,7 @@ static int solve_or_check(lua_State *L, int check)
         "flow",     "method", "lp",    "tolerance", "time_limit",      "iterations", "verbose",
         "mps",      "beta",   "settle", "slip",     "lps",             "starts",     "seed",
         "progress", "start",  "penalty", "complementarity", "cone",       "threads",
-        "lp_tolerance", "nearest", "path", NULL};
+        "lp_tolerance", "nearest", "path", "mechanisms", NULL};
     static const char *const flows[] = {"associative", "nonassociative", NULL};
     static const char *const methods[] = {"assoc", "seqlp", "mpec", NULL};
     static const char *const lps[] = {"auto", "simplex", "ipm", NULL};
@@ -1375,7 +1417,7 @@ static int solve_or_check(lua_State *L, int check)
      * Ipopt's start from the sequence does), nor Ipopt's cold start, which
      * runs no sequence (slip, last, still judges Ipopt's answer). */
     static const char *const seq[] = {"starts", "seed", "nearest", "path", "beta", "settle", "lps",
-                                      "slip", NULL};
+                                      "slip", "mechanisms", NULL};
     for (int k = 0; seq[k]; k++) {
         if (!field_given(L, 2, seq[k])) continue;
         if (!flow && mo.start != BL_MPEC_START_SEQLP)
@@ -1384,6 +1426,7 @@ static int solve_or_check(lua_State *L, int check)
             fail(L, "solve: field '%s' goes with the sequence of LPs, which start = \"cold\" does not run",
                  seq[k]);
     }
+    if (field(L, 2, "mechanisms")) mechanisms_field(L, m, &so); /* (stays on the stack) */
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;
     bl_solve_options_default(&o);

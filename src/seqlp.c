@@ -25,6 +25,9 @@ void bl_seqlp_options_default(bl_seqlp_options *o)
     o->path = -1;
     o->progress = 0;
     o->when_sliding = 0;
+    o->nmechanisms = 0;
+    o->mechanisms = NULL;
+    o->mechanism_alpha = NULL;
 }
 
 /* The state of one run, with everything it owns. */
@@ -58,6 +61,7 @@ typedef struct run {
     pthread_t rigid_thread;
     double best_alpha, best_settled, *best_x, *best_y;
     int best_early;        /* best_* certified before its sequence settled */
+    int best_given;        /* ... from the k-th mechanism given (1-based), or 0 */
     double *yc;            /* a settled LP's mechanism, for its certificate */
     double *xc;            /* the certificate's forces (certify) */
     const struct path_job *warm; /* the point the first fixed LP starts from, or NULL */
@@ -644,15 +648,18 @@ static int nearest_forces(run *r, double a, const double *y, const bl_seqlp_opti
 }
 
 /* Keeps a certificate's answer (alpha ac, of the LP at a with mechanism
- * y; its forces in r->xc) when it is the lowest yet. */
+ * y; its forces in r->xc) when it is the lowest yet; early: 1 where that
+ * LP came before its sequence settled, -k for the k-th mechanism given
+ * (bl_seqlp_options), which belongs to no start. */
 static void keep_certified(run *r, bl_solution *s, double ac, double a, const double *y, int early)
 {
-    s->start[s->nstarts - 1].alpha = ac;
+    if (early >= 0) s->start[s->nstarts - 1].alpha = ac; /* (< 0: a mechanism given, no start) */
     if (r->found && ac >= r->best_alpha) return;
     r->found = 1;
     r->best_alpha = ac;
     r->best_settled = a;
-    r->best_early = early;
+    r->best_early = early > 0;
+    r->best_given = early < 0 ? -early : 0;
     memcpy(r->best_x, r->xc, (size_t)r->cone->ncols * sizeof *r->best_x);
     memcpy(r->best_y, y, (size_t)r->fixed->nrows * sizeof *r->best_y);
 }
@@ -1638,6 +1645,22 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             goto fail;
     }
 
+    /* The mechanisms given, each tried as a certificate (a parameter
+     * study hands on the last answer: W1 under a floor at mu = 1.05
+     * certified 0.613618 by default, and 0.557536, its answer at the mu
+     * before, by this; doc/seqlp.md 18) */
+    for (int k = 0; k < o->nmechanisms && stop != BL_LP_INTERRUPTED && stop != BL_LP_TIME_LIMIT; k++) {
+        double cert;
+        bl_system_rows_of_mechanism(r.fixed, mc, o->mechanisms[k], r.yc);
+        bl_lp_status cs = certify(&r, o->mechanism_alpha[k], r.yc, o, s, &cert, err);
+        if (cs == BL_LP_FAILED && !r.lp_cone) goto fail;
+        if (o->base.verbose)
+            fprintf(stderr, "seqlp mechanism %d given: %s\n", k + 1,
+                    cs == BL_LP_OPTIMAL ? "certified" : "not certified");
+        if (cs == BL_LP_INTERRUPTED || cs == BL_LP_TIME_LIMIT) stop = cs;
+        else if (cs == BL_LP_OPTIMAL) keep_certified(&r, s, cert, o->mechanism_alpha[k], r.yc, -(k + 1));
+    }
+
     if (stop == BL_LP_INTERRUPTED) {
         s->interrupted = 1;
         const char *what = r.found ? "the lowest certified answer so far; lower ones may exist"
@@ -1665,6 +1688,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         s->alpha = r.best_alpha;
         s->alpha_settled = r.best_settled;
         s->early = r.best_early;
+        s->given = r.best_given;
         bl_solution_answer_status(s);
         s->certified = 1;
         s->has_mechanism = 1; /* none from an unbounded associative LP */

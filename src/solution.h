@@ -121,6 +121,8 @@ typedef struct bl_solution {
     double alpha_rigid;      /* ... with unlimited friction (INFINITY: unbounded) */
     double alpha_settled;    /* the alpha of the LP whose mechanism the answer's
                                 certificate holds (the answer is at or below it) */
+    int given;               /* the answer is that of the given-th mechanism the
+                                solve was given to try (1-based), or 0 */
     int early;               /* that LP came before its sequence settled, below the
                                 lowest alpha certified until then (seqlp.c) */
     int assoc_is_solution;   /* alpha_assoc = alpha_rigid: friction limits nothing */

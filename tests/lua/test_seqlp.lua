@@ -769,4 +769,39 @@ do
          ("%g, noted %s"):format(below, tostring(noted)))
   end
 end
+-- solve{ mechanisms = { r } }: a parameter study hands on its last answer.
+-- W1 at mu = 1 certifies a staircase whose sliding joints open as they
+-- slide: no dissipation, so by virtual work alpha = sum W vy / sum W vx
+-- over its blocks, at any friction that holds its closed joints.  Given
+-- to one start at mu = 2 and 5, which alone certifies more, that mechanism
+-- is the answer, at the same alpha.
+do
+  model { mu = 1 }
+  wall { courses = walls.W1, unit = { 0.4, 0.175 } }
+  local a, m, wx, wy = solve { progress = false }, current(), 0, 0
+  for i, u in ipairs(a.mechanism) do
+    local b = m:block_info(i)
+    if not b.support then wx, wy = wx + b.weight * u[1], wy + b.weight * u[2] end
+  end
+  T.ok(a.certified and math.abs(a.alpha - wy / wx) <= 1e-9 * a.alpha,
+       "W1, mu = 1: alpha = sum W vy / sum W vx, no dissipation (to 1e-9)", ("%.12f %.12f"):format(a.alpha, wy / wx))
+  for _, mu in ipairs { 2, 5 } do
+    model { mu = mu }
+    wall { courses = walls.W1, unit = { 0.4, 0.175 } }
+    local one = solve { progress = false, starts = 0 }
+    local b = solve { progress = false, starts = 0, mechanisms = { a } }
+    T.ok(b.certified and b.verified and math.abs(b.alpha - a.alpha) <= 1e-9 * a.alpha and one.alpha > b.alpha
+         and b.from_mechanism == 1 and tostring(b):find("certified from the mechanism of mechanisms[1]", 1, true),
+         ("W1, mu = %g, one start given mu = 1's answer: its alpha, below the start's own, said so"):format(mu),
+         ("%.9f (one start %.9f), from %s"):format(b.alpha, one.alpha, tostring(b.from_mechanism)))
+  end
+  T.eq(select(2, pcall(solve, { mechanisms = { a }, flow = "associative" })):gsub("^.-:%d+: ", ""),
+       "solve: field 'mechanisms' goes with flow = \"nonassociative\" (the sequence of LPs)",
+       "mechanisms with the associative flow: refused")
+  model { mu = 1 }
+  block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+  T.eq(select(2, pcall(solve, { mechanisms = { a } })):gsub("^.-:%d+: ", ""),
+       "solve: field 'mechanisms' entry 1 is a result of a model with other blocks (34, against this model's 1, "
+       .. "or other supports): a mechanism is given per block", "mechanisms of another model: refused")
+end
 T.done()
