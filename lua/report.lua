@@ -49,6 +49,10 @@ function Result.__tostring(r)
       -- the known case (doc/seqlp.md, "Where the method fails or is slow")
       say("  (usually a block held up by the friction of its head joints alone, over an opening that")
       say("  no block spans from jamb to jamb; with a lintel there the sequence certifies, as on W4)")
+    elseif not r.certified and r.note:find("grew without bound", 1, true) then
+      -- (doc/seqlp.md, "Where the method fails or is slow")
+      say("  (blocks wedged between supports, as a shallow arch between its springings: the thrust")
+      say("  of each LP raised the friction the next allowed)")
     end
   end
   if r.dead and r.dead.mechanism then
