@@ -52,7 +52,7 @@ return function(M, check_solve)
   -- sequence's settings, nor a cold start of Ipopt, which runs no sequence
   -- (solve{} refuses each of them).
   local seq_only = { starts = true, seed = true, nearest = true, path = true, beta = true, settle = true,
-                     slip = true, lps = true }
+                     slip = true, lps = true, mechanisms = true }
   local mpec_only = { start = true, penalty = true, complementarity = true }
   local function takes(method, flow, start, k)
     if k == "flow" then return method ~= "assoc" and method ~= "seqlp" end

@@ -113,9 +113,11 @@ function Result.__tostring(r)
       say("  %d certificates tried; the nearest forces after %d that failed", tried, near)
     end
     if r.from_mechanism then
-      say("  certified from the mechanism of mechanisms[%d], the result given (alpha %.6g there),",
-          r.from_mechanism, r.alpha_settled)
-      say("  below what the starts certified: a solution from %.6g", r.alpha)
+      local any = false
+      for _, st in ipairs(r.starts or {}) do any = any or st.certified end
+      say("  certified from the mechanism of mechanisms[%d], the result given, %s:", r.from_mechanism,
+          any and "below what the starts certified" or "where no start certified")
+      say("  a solution from %.6g", r.alpha)
     elseif r.certified_early then
       say("  certified from an LP at %.6g, before its sequence settled (below the lowest alpha",
           r.alpha_settled)

@@ -1292,9 +1292,8 @@ static int interrupted(lua_State *L, const char *note, const char *fmt, ...)
 
 /* solve{ mechanisms = { r1, r2, ... } }, its value on top: results of
  * models with the blocks of m (as many, the same ones supports), whose
- * mechanisms the sequence tries as certificates (seqlp.h).  The arrays
- * live in a userdata left on the stack above the list, which keeps the
- * results alive. */
+ * mechanisms the sequence tries as certificates (seqlp.h).  Their
+ * velocities are copied into a userdata left on the stack above the list. */
 static void mechanisms_field(lua_State *L, bl_model *m, bl_seqlp_options *so)
 {
     int list = lua_gettop(L);
@@ -1303,8 +1302,9 @@ static void mechanisms_field(lua_State *L, bl_model *m, bl_seqlp_options *so)
     int n = (int)luaL_len(L, list);
     if (n < 1 || n > 1000)
         fail(L, "solve: field 'mechanisms' must list from 1 to 1000 results, got %d", n);
-    const double **u = lua_newuserdatauv(L, (size_t)n * (sizeof *u + sizeof(double)), 0);
-    double *alpha = (double *)(u + n);
+    size_t per = (size_t)(m->dim == 3 ? 6 : 3) * (size_t)m->nblocks; /* each copied: a list's
+                                         entries need not outlive the solve */
+    double *u = lua_newuserdatauv(L, (size_t)n * per * sizeof *u, 0);
     for (int k = 0; k < n; k++) {
         lua_geti(L, list, k + 1);
         bl_solution **box = NULL;
@@ -1316,19 +1316,20 @@ static void mechanisms_field(lua_State *L, bl_model *m, bl_seqlp_options *so)
             fail(L, "solve: field 'mechanisms' entry %d has no mechanism (its status: %s)", k + 1,
                  bl_status_name(r->status));
         const bl_model *rm = r->model;
-        int same = rm->dim == m->dim && rm->nblocks == m->nblocks;
+        if (rm->dim != m->dim)
+            fail(L, "solve: field 'mechanisms' entry %d is a result of a %dD model, this one is %dD", k + 1,
+                 rm->dim, m->dim);
+        int same = rm->nblocks == m->nblocks;
         for (int b = 0; same && b < m->nblocks; b++) same = rm->blocks[b].support == m->blocks[b].support;
         if (!same)
             fail(L, "solve: field 'mechanisms' entry %d is a result of a model with other blocks (%d, "
                     "against this model's %d, or other supports): a mechanism is given per block",
                  k + 1, rm->nblocks, m->nblocks);
-        u[k] = r->u;
-        alpha[k] = r->alpha;
+        memcpy(u + (size_t)k * per, r->u, per * sizeof *u);
         lua_pop(L, 2);
     }
     so->nmechanisms = n;
     so->mechanisms = u;
-    so->mechanism_alpha = alpha;
 }
 
 /* m:solve(t[, note]): note, a string, ends the message of an interruption

@@ -27,7 +27,6 @@ void bl_seqlp_options_default(bl_seqlp_options *o)
     o->when_sliding = 0;
     o->nmechanisms = 0;
     o->mechanisms = NULL;
-    o->mechanism_alpha = NULL;
 }
 
 /* The state of one run, with everything it owns. */
@@ -423,7 +422,8 @@ static bl_lp_status certificate(run *r, double alpha, const double *y,
     if (st != BL_LP_OPTIMAL && st != BL_LP_UNBOUNDED && st != BL_LP_ITERATION_LIMIT &&
         st != BL_LP_FAILED)
         return st;
-    if (alpha < r->floor) return BL_LP_INFEASIBLE; /* below what may be certified */
+    /* below what may be certified, or no settled alpha (a mechanism given) */
+    if (!(alpha >= r->floor)) return BL_LP_INFEASIBLE;
     r->clo[na] = r->chi[na] = *cert = alpha;
     /* from scratch: the interior point re-solving from the lowest alpha's
      * path did not converge on the 3D 4,935-block wall (and handed the LP
@@ -1649,16 +1649,38 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
      * study hands on the last answer: W1 under a floor at mu = 1.05
      * certified 0.613618 by default, and 0.557536, its answer at the mu
      * before, by this; doc/seqlp.md 18) */
+    int given = 0; /* the mechanism given that a stop came in, 1-based */
     for (int k = 0; k < o->nmechanisms && stop != BL_LP_INTERRUPTED && stop != BL_LP_TIME_LIMIT; k++) {
-        double cert;
-        bl_system_rows_of_mechanism(r.fixed, mc, o->mechanisms[k], r.yc);
-        bl_lp_status cs = certify(&r, o->mechanism_alpha[k], r.yc, o, s, &cert, err);
+        if (bl_interrupt_pending() || (o->base.deadline > 0 && bl_clock() > o->base.deadline)) {
+            stop = bl_interrupt_pending() ? BL_LP_INTERRUPTED : BL_LP_TIME_LIMIT;
+            given = k + 1;
+            break;
+        }
+        /* its rows, scaled so that the live load does unit work on it, as
+         * on an LP's mechanism; none where it does none */
+        const bl_system *f = r.fixed;
+        bl_system_rows_of_mechanism(f, mc, o->mechanisms + (size_t)k * (size_t)(mc->dim == 3 ? 6 : 3) *
+                                                         (size_t)mc->nblocks, r.yc);
+        double work = 0.0, cert;
+        for (int q = f->colptr[f->nforce]; q < f->colptr[f->nforce + 1]; q++)
+            work += f->val[q] * r.yc[f->rowind[q]];
+        bl_lp_status cs = BL_LP_INFEASIBLE;
+        if (work > 0.0 && isfinite(work)) {
+            for (int i = 0; i < f->nrows; i++) r.yc[i] /= work;
+            /* (no settled alpha to fall back to: its lowest alpha, verified, or nothing) */
+            cs = certify(&r, NAN, r.yc, o, s, &cert, err);
+        }
         if (cs == BL_LP_FAILED && !r.lp_cone) goto fail;
         if (o->base.verbose)
             fprintf(stderr, "seqlp mechanism %d given: %s\n", k + 1,
-                    cs == BL_LP_OPTIMAL ? "certified" : "not certified");
-        if (cs == BL_LP_INTERRUPTED || cs == BL_LP_TIME_LIMIT) stop = cs;
-        else if (cs == BL_LP_OPTIMAL) keep_certified(&r, s, cert, o->mechanism_alpha[k], r.yc, -(k + 1));
+                    !(work > 0.0) ? "the live load does no work on it" : cs == BL_LP_OPTIMAL ? "certified"
+                                                                                     : "not certified");
+        if (cs == BL_LP_INTERRUPTED || cs == BL_LP_TIME_LIMIT) {
+            stop = cs;
+            given = k + 1;
+        } else if (cs == BL_LP_OPTIMAL) {
+            keep_certified(&r, s, cert, cert, r.yc, -(k + 1));
+        }
     }
 
     if (stop == BL_LP_INTERRUPTED) {
@@ -1666,7 +1688,11 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         const char *what = r.found ? "the lowest certified answer so far; lower ones may exist"
                                    : "nothing certified yet";
         const char *lps = s->lps == 1 ? "" : "s";
-        if (s->start[s->nstarts - 1].continues)
+        if (given)
+            snprintf(s->note, sizeof s->note,
+                     "stopped by Ctrl-C after %d LP%s, at mechanism %d of the %d given: %s", s->lps, lps,
+                     given, o->nmechanisms, what);
+        else if (s->start[s->nstarts - 1].continues)
             snprintf(s->note, sizeof s->note,
                      "stopped by Ctrl-C after %d LP%s, in start 1 going on after the restarts: %s",
                      s->lps, lps, what);
@@ -1676,7 +1702,10 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     }
     if (stop == BL_LP_TIME_LIMIT && r.found) {
         s->time_up = 1;
-        if (s->start[s->nstarts - 1].continues)
+        if (given)
+            snprintf(s->note, sizeof s->note, "the time limit ended the search at mechanism %d of the %d "
+                     "given (%d LPs): lower answers may exist", given, o->nmechanisms, s->lps);
+        else if (s->start[s->nstarts - 1].continues)
             snprintf(s->note, sizeof s->note, "the time limit ended the search in start 1 going on after "
                      "the restarts (%d LPs): lower answers may exist", s->lps);
         else

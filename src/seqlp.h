@@ -42,12 +42,11 @@ typedef struct bl_seqlp_options {
     int when_sliding;      /* solve's default: without a joint of finite, non-zero
                               friction, return the associative answer alone */
     int nmechanisms;       /* mechanisms given to try after the starts: */
-    const double *const *mechanisms; /* per block velocities as bl_solution's u
-                              (of a model with the same blocks), each tried as a
+    const double *mechanisms; /* nmechanisms after one another, each the
+                              velocities of the blocks as bl_solution's u (of a
+                              model with the same blocks), tried as a
                               certificate; the lowest certified alpha over the
                               starts and these is the answer */
-    const double *mechanism_alpha; /* the alpha each came with (the certificate's
-                              fall-back, as a settled LP's) */
 } bl_seqlp_options;
 
 void bl_seqlp_options_default(bl_seqlp_options *o);

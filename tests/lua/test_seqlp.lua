@@ -795,6 +795,26 @@ do
          ("W1, mu = %g, one start given mu = 1's answer: its alpha, below the start's own, said so"):format(mu),
          ("%.9f (one start %.9f), from %s"):format(b.alpha, one.alpha, tostring(b.from_mechanism)))
   end
+  -- the second of two entries, the first a start's own at mu = 5 (above)
+  local high = solve { progress = false, starts = 0 }
+  model { mu = 2 }
+  wall { courses = walls.W1, unit = { 0.4, 0.175 } }
+  local two = solve { progress = false, starts = 0, mechanisms = { high, a } }
+  T.ok(two.from_mechanism == 2 and math.abs(two.alpha - a.alpha) <= 1e-9 * a.alpha,
+       "W1, mu = 2, given mu = 5's one start and mu = 1's answer: the second, the lower", tostring(two.from_mechanism))
+  -- another load: W4's answer given to W4 pushed along (1, 0.3), to a
+  -- start cut before it can certify: the mechanism, rescaled to the new
+  -- live load's unit work, certified and verified at the default's alpha
+  model { mu = 0.65 }
+  wall { courses = walls.W4, unit = { 0.4, 0.175 } }
+  local w4 = solve { progress = false }
+  load { live = "horizontal", direction = { 1, 0.3 } }
+  local default = solve { progress = false }
+  local c = solve { progress = false, starts = 0, lps = 2, mechanisms = { w4 } }
+  T.ok(c.certified and c.verified and c.from_mechanism == 1 and math.abs(c.alpha - default.alpha) <= 1e-6 * default.alpha
+       and tostring(c):find("where no start certified", 1, true),
+       "W4 pushed along (1, 0.3), given W4's answer along x: certified, verified, the default's alpha (to 1e-6)",
+       ("%.9f against %.9f, %s"):format(c.alpha or 0 / 0, default.alpha, tostring(c.verified)))
   T.eq(select(2, pcall(solve, { mechanisms = { a }, flow = "associative" })):gsub("^.-:%d+: ", ""),
        "solve: field 'mechanisms' goes with flow = \"nonassociative\" (the sequence of LPs)",
        "mechanisms with the associative flow: refused")
@@ -803,5 +823,11 @@ do
   T.eq(select(2, pcall(solve, { mechanisms = { a } })):gsub("^.-:%d+: ", ""),
        "solve: field 'mechanisms' entry 1 is a result of a model with other blocks (34, against this model's 1, "
        .. "or other supports): a mechanism is given per block", "mechanisms of another model: refused")
+  T.eq(select(2, pcall(solve, { mechanisms = { 0.6 } })):gsub("^.-:%d+: ", ""),
+       "solve: field 'mechanisms' entry 1 must be a result of solve{}", "mechanisms = { a number }: refused")
+  model { mu = 1, dim = 3 }
+  box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+  T.eq(select(2, pcall(solve, { mechanisms = { a } })):gsub("^.-:%d+: ", ""),
+       "solve: field 'mechanisms' entry 1 is a result of a 2D model, this one is 3D", "a 2D mechanism for a 3D model: refused")
 end
 T.done()
