@@ -960,6 +960,53 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
     return 0;
 }
 
+/* The mechanisms given (bl_seqlp_options), each tried as a certificate
+ * after the starts: a parameter study hands on its last answer (W1 under
+ * a floor at mu = 1.0500000000000003, from a loop, certified 0.613618 by
+ * default and 0.557536, its answer at the mu before, so; doc/seqlp.md
+ * 18).  A stop (Ctrl-C, the time limit) sets *stop and, 1-based, *given.
+ * Returns 0, or -1 with err set. */
+static int try_given(run *r, const bl_seqlp_options *o, bl_solution *s, bl_lp_status *stop, int *given,
+                     bl_error *err)
+{
+    const bl_system *f = r->fixed;
+    const bl_model *mc = s->model;
+    size_t per = (size_t)(mc->dim == 3 ? 6 : 3) * (size_t)mc->nblocks;
+    for (int k = 0; k < o->nmechanisms; k++) {
+        bl_lp_status cs = bl_interrupt_pending() ? BL_LP_INTERRUPTED
+                          : o->base.deadline > 0 && bl_clock() > o->base.deadline ? BL_LP_TIME_LIMIT
+                                                                                  : BL_LP_INFEASIBLE;
+        if (cs != BL_LP_INFEASIBLE) {
+            *stop = cs;
+            *given = k + 1;
+            return 0;
+        }
+        /* its rows, scaled so that the live load does unit work on it, as
+         * on an LP's mechanism; none where it does none */
+        bl_system_rows_of_mechanism(f, mc, o->mechanisms + (size_t)k * per, r->yc);
+        double work = 0.0, cert;
+        for (int q = f->colptr[f->nforce]; q < f->colptr[f->nforce + 1]; q++)
+            work += f->val[q] * r->yc[f->rowind[q]];
+        if (work > 0.0 && isfinite(work)) {
+            for (int i = 0; i < f->nrows; i++) r->yc[i] /= work;
+            /* (no settled alpha to fall back to: its lowest alpha, verified, or nothing) */
+            cs = certify(r, NAN, r->yc, o, s, &cert, err);
+            if (cs == BL_LP_FAILED && !r->lp_cone) return -1;
+        }
+        if (o->base.verbose)
+            fprintf(stderr, "seqlp mechanism %d given: %s\n", k + 1,
+                    !(work > 0.0) ? "the live load does no work on it"
+                    : cs == BL_LP_OPTIMAL ? "certified" : "not certified");
+        if (cs == BL_LP_INTERRUPTED || cs == BL_LP_TIME_LIMIT) {
+            *stop = cs;
+            *given = k + 1;
+            return 0;
+        }
+        if (cs == BL_LP_OPTIMAL) keep_certified(r, s, cert, cert, r->yc, -(k + 1));
+    }
+    return 0;
+}
+
 /* one_start with a history of its own (continuing the 1-based start
  * `continues`, or 0) and what it cost: the LPs and iterations since lps0
  * and its0 and the time since t0, which include the LP of a restart's
@@ -1487,7 +1534,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         if (!rl.system) goto fail;
         rl.lp = bl_solve_lp(rl.system, rl.system->lo, rl.system->hi, NULL, &o->base, err);
         if (rl.lp && !o->base.verbose && strcmp(bl_lp_engine(rl.lp), "ipm") == 0 &&
-            bl_lp_leaves_core(fixed_options(r.fixed, &o->base).lp, o->base.threads, r.fixed->nrows, r.fixed->ncols))
+            bl_lp_leaves_core(fixed_options(r.fixed, &o->base).lp, o->base.threads, r.fixed->nrows,
+                              r.fixed->ncols))
             r.rigid_beside = pthread_create(&r.rigid_thread, NULL, solve_rigid, &rl) == 0;
         if (rl.lp && !r.rigid_beside) solve_rigid(&rl);
     }
@@ -1645,43 +1693,10 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             goto fail;
     }
 
-    /* The mechanisms given, each tried as a certificate (a parameter
-     * study hands on the last answer: W1 under a floor at mu = 1.05
-     * certified 0.613618 by default, and 0.557536, its answer at the mu
-     * before, by this; doc/seqlp.md 18) */
     int given = 0; /* the mechanism given that a stop came in, 1-based */
-    for (int k = 0; k < o->nmechanisms && stop != BL_LP_INTERRUPTED && stop != BL_LP_TIME_LIMIT; k++) {
-        if (bl_interrupt_pending() || (o->base.deadline > 0 && bl_clock() > o->base.deadline)) {
-            stop = bl_interrupt_pending() ? BL_LP_INTERRUPTED : BL_LP_TIME_LIMIT;
-            given = k + 1;
-            break;
-        }
-        /* its rows, scaled so that the live load does unit work on it, as
-         * on an LP's mechanism; none where it does none */
-        const bl_system *f = r.fixed;
-        bl_system_rows_of_mechanism(f, mc, o->mechanisms + (size_t)k * (size_t)(mc->dim == 3 ? 6 : 3) *
-                                                         (size_t)mc->nblocks, r.yc);
-        double work = 0.0, cert;
-        for (int q = f->colptr[f->nforce]; q < f->colptr[f->nforce + 1]; q++)
-            work += f->val[q] * r.yc[f->rowind[q]];
-        bl_lp_status cs = BL_LP_INFEASIBLE;
-        if (work > 0.0 && isfinite(work)) {
-            for (int i = 0; i < f->nrows; i++) r.yc[i] /= work;
-            /* (no settled alpha to fall back to: its lowest alpha, verified, or nothing) */
-            cs = certify(&r, NAN, r.yc, o, s, &cert, err);
-        }
-        if (cs == BL_LP_FAILED && !r.lp_cone) goto fail;
-        if (o->base.verbose)
-            fprintf(stderr, "seqlp mechanism %d given: %s\n", k + 1,
-                    !(work > 0.0) ? "the live load does no work on it" : cs == BL_LP_OPTIMAL ? "certified"
-                                                                                     : "not certified");
-        if (cs == BL_LP_INTERRUPTED || cs == BL_LP_TIME_LIMIT) {
-            stop = cs;
-            given = k + 1;
-        } else if (cs == BL_LP_OPTIMAL) {
-            keep_certified(&r, s, cert, cert, r.yc, -(k + 1));
-        }
-    }
+    if (stop != BL_LP_INTERRUPTED && stop != BL_LP_TIME_LIMIT &&
+        try_given(&r, o, s, &stop, &given, err))
+        goto fail;
 
     if (stop == BL_LP_INTERRUPTED) {
         s->interrupted = 1;
