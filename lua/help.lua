@@ -4,7 +4,8 @@ local help = {}
 
 -- name, what it does, its fields (as the command's own "unknown field"
 -- message lists them: tests/lua/test_bad_input.lua holds the two together),
--- and the guide's section.
+-- and the guide's section; dim3: for 3D models only; call: how it is
+-- written after its name, "{}" unless given.
 local COMMANDS = {
   { "model", "start a model (2D, or dim = 3) and make it the current one",
     "name, dim, mu, cohesion, density, thickness, gravity, interface, mu_t", "4" },
