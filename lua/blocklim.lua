@@ -7,9 +7,17 @@ return function(core)
   local methods = core.model_methods
   local current
 
+  -- The methods wrapped here say, as the core's own do, how to call them
+  -- when called with a dot (m.undo() for m:undo()).
+  local function with_colon(m, name, args)
+    if type(m) ~= "userdata" then
+      error(("%s: expects a model, got %s; call it with a colon: m:%s%s"):format(name, type(m), name, args), 3)
+    end
+  end
   -- Results get the report metatable: print(r), r:svg(file), r:png(file).
   local solve = methods.solve
   function methods.solve(m, t, note)
+    with_colon(m, "solve", "{...}")
     local r = solve(m, t, note)
     -- a cone the method cannot take (the sequence of LPs and Ipopt an even
     -- number of facets, not adaptive): the one it took, and the one asked
@@ -28,6 +36,7 @@ return function(core)
   end }
   local stats = methods.stats
   function methods.stats(m)
+    with_colon(m, "stats", "()")
     return setmetatable(stats(m), Stats)
   end
   -- load{ dead = { over = ..., q = ... } } (and live): a distributed load,
@@ -36,6 +45,7 @@ return function(core)
   local distributed = require "blocklim.distributed"
   local point_load = methods.load
   function methods.load(m, t)
+    with_colon(m, "load", "{...}")
     if type(t) ~= "table" then return point_load(m, t) end
     local points, rest, spread = {}, {}, false
     for k, v in pairs(t) do
@@ -96,6 +106,7 @@ return function(core)
   -- m:block{} and block{}, which calls it
   local one_block = methods.block
   function methods.block(m, t)
+    with_colon(m, "block", "{...}")
     local before = core.blocks(m)
     local b = one_block(m, t)
     added(m, before)
@@ -106,6 +117,7 @@ return function(core)
   -- added blocks to it (block, wall, arch, box, import, ...), those blocks
   -- gone with the loads and joint settings that name them; returns m.
   function methods.undo(m)
+    with_colon(m, "undo", "()")
     local stack, n = made[m] or {}, core.blocks(m)
     -- (a wall's own blocks were pushed one by one before the wall)
     while #stack > 0 and stack[#stack] >= n do table.remove(stack) end

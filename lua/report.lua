@@ -572,7 +572,10 @@ function report.wrap(r)
   end
   local three = r.mechanism and r.mechanism[1] and #r.mechanism[1] == 6
   local shown = { __tostring = function(u) return velocity_text(u, vmax, wmax) end,
-                  __index = velocity_field, -- and for Tab (src/main.c):
+                  __index = velocity_field,
+                  __newindex = function()
+                    error("a mechanism entry is read-only: copy it to change it ({ table.unpack(u) })", 2)
+                  end, -- and for Tab (src/main.c):
                   __fields = three and { "vx", "vy", "vz", "wx", "wy", "wz", "v", "omega" }
                                    or { "vx", "vy", "omega" } }
   for _, u in ipairs(r.mechanism or {}) do setmetatable(u, shown) end

@@ -1299,6 +1299,9 @@ static void mechanisms_field(lua_State *L, bl_model *m, bl_seqlp_options *so)
     int list = lua_gettop(L);
     if (!lua_istable(L, list))
         fail(L, "solve: field 'mechanisms' must be a list of results, got %s", luaL_typename(L, list));
+    if (lua_getfield(L, list, "_solution") != LUA_TNIL)
+        fail(L, "solve: field 'mechanisms' must be a list of results, got one result: write { r }");
+    lua_pop(L, 1);
     int n = (int)luaL_len(L, list);
     if (n < 1 || n > 1000)
         fail(L, "solve: field 'mechanisms' must list from 1 to 1000 results, got %d", n);

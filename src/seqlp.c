@@ -654,7 +654,9 @@ static int nearest_forces(run *r, double a, const double *y, const bl_seqlp_opti
 static void keep_certified(run *r, bl_solution *s, double ac, double a, const double *y, int early)
 {
     if (early >= 0) s->start[s->nstarts - 1].alpha = ac; /* (< 0: a mechanism given, no start) */
-    if (r->found && ac >= r->best_alpha) return;
+    /* a mechanism given replaces the starts' answer only below its round-off */
+    double tie = early < 0 ? 1e-9 * fabs(r->best_alpha) : 0.0;
+    if (r->found && ac >= r->best_alpha - tie) return;
     r->found = 1;
     r->best_alpha = ac;
     r->best_settled = a;

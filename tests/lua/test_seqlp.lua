@@ -823,6 +823,16 @@ do
   T.eq(select(2, pcall(solve, { mechanisms = { a } })):gsub("^.-:%d+: ", ""),
        "solve: field 'mechanisms' entry 1 is a result of a model with other blocks (34, against this model's 1, "
        .. "or other supports): a mechanism is given per block", "mechanisms of another model: refused")
+  -- its own answer given back: a tie, kept as the starts'
+  model { mu = 1 }
+  wall { courses = walls.W1, unit = { 0.4, 0.175 } }
+  local again = solve { progress = false, mechanisms = { a } }
+  T.ok(again.from_mechanism == nil and math.abs(again.alpha - a.alpha) <= 1e-9 * a.alpha,
+       "W1, mu = 1, given its own answer: the same alpha, the starts' (a round-off tie is no win)",
+       tostring(again.from_mechanism))
+  T.eq(select(2, pcall(solve, { mechanisms = a })):gsub("^.-:%d+: ", ""),
+       "solve: field 'mechanisms' must be a list of results, got one result: write { r }",
+       "mechanisms = r, not { r }: said so")
   T.eq(select(2, pcall(solve, { mechanisms = { 0.6 } })):gsub("^.-:%d+: ", ""),
        "solve: field 'mechanisms' entry 1 must be a result of solve{}", "mechanisms = { a number }: refused")
   model { mu = 1, dim = 3 }
