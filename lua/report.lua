@@ -112,6 +112,11 @@ function Result.__tostring(r)
     if near > 0 then
       say("  %d certificates tried; the nearest forces after %d that failed", tried, near)
     end
+    local mg = r.mechanisms_given
+    if mg and not r.from_mechanism then
+      say("  (mechanisms given: %d tried, %d certified%s)", mg.tried, mg.certified,
+          r.certified and mg.certified > 0 and ", none below the starts' answer" or "")
+    end
     if r.from_mechanism then
       local any = false
       for _, st in ipairs(r.starts or {}) do any = any or st.certified end

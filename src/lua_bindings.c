@@ -1063,6 +1063,12 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
             if (s->given) set_integer(L, "from_mechanism", s->given);
         }
         set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
+        if (s->given_tried) {
+            lua_createtable(L, 0, 2);
+            set_integer(L, "tried", s->given_tried);
+            set_integer(L, "certified", s->given_certified);
+            lua_setfield(L, -2, "mechanisms_given");
+        }
         if (s->restarts_why) set_string(L, "restarts_why", s->restarts_why);
         if (s->live_scales_dead) set_boolean(L, "live_scales_dead", 1);
         if (s->none_dilates) set_boolean(L, "none_dilates", 1);

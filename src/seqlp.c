@@ -989,6 +989,7 @@ static int try_given(run *r, const bl_seqlp_options *o, bl_solution *s, bl_lp_st
         double work = 0.0, cert;
         for (int q = f->colptr[f->nforce]; q < f->colptr[f->nforce + 1]; q++)
             work += f->val[q] * r->yc[f->rowind[q]];
+        s->given_tried++;
         if (work > 0.0 && isfinite(work)) {
             for (int i = 0; i < f->nrows; i++) r->yc[i] /= work;
             /* (no settled alpha to fall back to: its lowest alpha, verified, or nothing) */
@@ -1004,7 +1005,10 @@ static int try_given(run *r, const bl_seqlp_options *o, bl_solution *s, bl_lp_st
             *given = k + 1;
             return 0;
         }
-        if (cs == BL_LP_OPTIMAL) keep_certified(r, s, cert, cert, r->yc, -(k + 1));
+        if (cs == BL_LP_OPTIMAL) {
+            s->given_certified++;
+            keep_certified(r, s, cert, cert, r->yc, -(k + 1));
+        }
     }
     return 0;
 }

@@ -123,6 +123,7 @@ typedef struct bl_solution {
                                 certificate holds (the answer is at or below it) */
     int given;               /* the answer is that of the given-th mechanism the
                                 solve was given to try (1-based), or 0 */
+    int given_tried, given_certified; /* of the mechanisms given: tried, certified */
     int early;               /* that LP came before its sequence settled, below the
                                 lowest alpha certified until then (seqlp.c) */
     int assoc_is_solution;   /* alpha_assoc = alpha_rigid: friction limits nothing */

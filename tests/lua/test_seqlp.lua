@@ -830,6 +830,13 @@ do
   T.ok(again.from_mechanism == nil and math.abs(again.alpha - a.alpha) <= 1e-9 * a.alpha,
        "W1, mu = 1, given its own answer: the same alpha, the starts' (a round-off tie is no win)",
        tostring(again.from_mechanism))
+  -- given to the wall pushed the other way, on which the live load does
+  -- negative work: tried, not certified, and said so
+  load { live = "horizontal", direction = { -1, 0 } }
+  local back = solve { progress = false, mechanisms = { a } }
+  T.ok(back.mechanisms_given and back.mechanisms_given.tried == 1 and back.mechanisms_given.certified == 0
+       and back.from_mechanism == nil and tostring(back):find("(mechanisms given: 1 tried, 0 certified", 1, true),
+       "W1 pushed towards -x, given its +x answer: tried, not certified, said so")
   T.eq(select(2, pcall(solve, { mechanisms = a })):gsub("^.-:%d+: ", ""),
        "solve: field 'mechanisms' must be a list of results, got one result: write { r }",
        "mechanisms = r, not { r }: said so")
