@@ -391,17 +391,18 @@ return function(M)
     end
     if t.support ~= nil and not any then
       -- a support among the shapes 'layers' leaves out
-      local out, seen = {}, {}
+      local out, listed = {}, {}
       for _, s in ipairs(left) do
         local ok, is = pcall(support, s.name)
-        if ok and is and not seen[s.name] and #out < 8 then out[#out + 1], seen[s.name] = ("'%s'"):format(s.name), true end
+        if ok and is and not listed[s.name] and #out < 8 then
+          out[#out + 1], listed[s.name] = ("'%s'"):format(s.name), true
+        end
       end
       if #out > 0 then
         fail(("field 'support' matches only names that field 'layers' leaves out (%s): the supports are "
               .. "blocks too, so 'layers' must keep them"):format(table.concat(out, ", ")))
       end
-      local names
-      names, seen = {}, {}
+      local names, seen = {}, {}
       for _, s in ipairs(shapes) do
         if not seen[s.name] and #names < 8 then names[#names + 1], seen[s.name] = ("'%s'"):format(s.name), true end
       end
