@@ -224,6 +224,12 @@ function Result.__tostring(r)
     local why = {}
     if i.start_why then why[#why + 1] = i.start_why end
     if i.alpha_start == i.alpha_start then why[#why + 1] = ("alpha %.6g"):format(i.alpha_start) end
+    if i.start_mechanism then -- the sequence's answer came from a mechanism given
+      why[#why + 1] = ("certified from the mechanism of mechanisms[%d]"):format(i.start_mechanism)
+    elseif i.mechanisms_given then
+      why[#why + 1] = ("mechanisms given: %d tried, %d certified"):format(i.mechanisms_given.tried,
+        i.mechanisms_given.certified)
+    end
     say("  %s flow, mpec method: Ipopt %s after %d iterations, %d constraints x %d variables",
         r.flow, i.status, r.iterations, size.rows, size.columns)
     say("  complementarity by %s, started from %s%s; sum of products %s", i.complementarity,
@@ -245,6 +251,10 @@ function Result.__tostring(r)
   if r.flow == "associative" and r.rigid_joints then
     say("  joints with mu = inf cannot slide, not even where they open (the associative flow's")
     say("  limit); flow = \"nonassociative\" lets a joint that carries nothing slide open")
+  end
+  if r.unused then -- sequence fields given to a default solve that ran no sequence
+    say("  not used: %s, which go with the sequence of LPs; without a joint of finite", r.unused)
+    say("  friction solve{} runs none unless given flow = \"nonassociative\"")
   end
   if r.cone then -- 3D: alpha depends on the pyramid that stands for Coulomb's cone
     local c, bound, friction = r.cone, "", false

@@ -985,6 +985,17 @@ static int model_block_info(lua_State *L)
 
 static void push_details(lua_State *L, const bl_solution *s);
 
+/* Into the table on the top, where the solve was given mechanisms to try
+ * (solve{ mechanisms }): how many were tried and how many certified. */
+static void set_mechanisms_given(lua_State *L, const bl_solution *s)
+{
+    if (!s->given_tried) return;
+    lua_createtable(L, 0, 2);
+    set_integer(L, "tried", s->given_tried);
+    set_integer(L, "certified", s->given_certified);
+    lua_setfield(L, -2, "mechanisms_given");
+}
+
 /* Into the result table on the top: each loaded interface's centre of
  * pressure (`at`, on the thrust line) and the reactions on the supports. */
 static void push_thrust(lua_State *L, const bl_solution *s)
@@ -1063,12 +1074,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
             if (s->given) set_integer(L, "from_mechanism", s->given);
         }
         set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
-        if (s->given_tried) {
-            lua_createtable(L, 0, 2);
-            set_integer(L, "tried", s->given_tried);
-            set_integer(L, "certified", s->given_certified);
-            lua_setfield(L, -2, "mechanisms_given");
-        }
+        set_mechanisms_given(L, s);
         if (s->restarts_why) set_string(L, "restarts_why", s->restarts_why);
         if (s->live_scales_dead) set_boolean(L, "live_scales_dead", 1);
         if (s->none_dilates) set_boolean(L, "none_dilates", 1);
@@ -1128,6 +1134,8 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
         set_number(L, "pairs", s->pair_sum);
         set_number(L, "alpha", s->alpha_ipopt);
         set_boolean(L, "kept_start", s->kept_start);
+        if (s->given) set_integer(L, "start_mechanism", s->given); /* the start's answer: seqlp's from_mechanism */
+        set_mechanisms_given(L, s);
         lua_setfield(L, -2, "ipopt");
         if (strcmp(s->flow, "nonassociative") == 0) set_number(L, "slip", s->slip);
     }
@@ -1428,8 +1436,11 @@ static int solve_or_check(lua_State *L, int check)
      * runs no sequence (slip, last, still judges Ipopt's answer). */
     static const char *const seq[] = {"starts", "seed", "nearest", "path", "beta", "settle", "lps",
                                       "slip", "mechanisms", NULL};
+    char seq_given[120] = ""; /* those given, for a default solve that runs no sequence */
     for (int k = 0; seq[k]; k++) {
         if (!field_given(L, 2, seq[k])) continue;
+        snprintf(seq_given + strlen(seq_given), sizeof seq_given - strlen(seq_given), "%s%s",
+                 seq_given[0] ? ", " : "", seq[k]);
         if (!flow && mo.start != BL_MPEC_START_SEQLP)
             fail(L, "solve: field '%s' goes with flow = \"nonassociative\" (the sequence of LPs)", seq[k]);
         if (method == MPEC && mo.start == BL_MPEC_START_COLD && strcmp(seq[k], "slip") != 0)
@@ -1534,6 +1545,12 @@ static int solve_or_check(lua_State *L, int check)
         return interrupted(L, note, "solve: interrupted (Ctrl-C); the model is as it was");
     }
     push_result(L, s, sidx, 0);
+    if (so.when_sliding && seq_given[0] && strcmp(s->method, "assoc") == 0) {
+        /* solve's default on a model without finite friction: the
+         * associative answer, no sequence to take these fields */
+        lua_pushstring(L, seq_given);
+        lua_setfield(L, -2, "unused");
+    }
     if (*dead) {
         push_result(L, *dead, sidx - 1, 1);
         lua_setfield(L, -2, "dead");

@@ -797,6 +797,13 @@ do
   end
   -- the second of two entries, the first a start's own at mu = 5 (above)
   local high = solve { progress = false, starts = 0 }
+  -- the direct solve, started from the sequence given the same: Ipopt's
+  -- answer no higher than the mechanism's alpha, and the start named
+  local p = solve { progress = false, method = "mpec", starts = 0, mechanisms = { a } }
+  T.ok(p.ipopt.start_mechanism == 1 and p.verified and p.alpha <= a.alpha * (1 + 1e-9)
+       and tostring(p):find("certified from the mechanism of mechanisms[1]", 1, true),
+       "W1, mu = 5, mpec from one start given mu = 1's answer: that start named, alpha no higher (to 1e-9)",
+       ("%s %.9f"):format(tostring(p.ipopt.start_mechanism), p.alpha))
   model { mu = 2 }
   wall { courses = walls.W1, unit = { 0.4, 0.175 } }
   local two = solve { progress = false, starts = 0, mechanisms = { high, a } }
@@ -837,6 +844,16 @@ do
   T.ok(back.mechanisms_given and back.mechanisms_given.tried == 1 and back.mechanisms_given.certified == 0
        and back.from_mechanism == nil and tostring(back):find("(mechanisms given: 1 tried, 0 certified", 1, true),
        "W1 pushed towards -x, given its +x answer: tried, not certified, said so")
+  -- rigid joints: solve{}'s default is the associative answer, which
+  -- names the field it did not use; the sequence asked for tries it
+  model { mu = math.huge }
+  wall { courses = walls.W1, unit = { 0.4, 0.175 } }
+  local rigid = solve { progress = false, mechanisms = { a } }
+  local asked = solve { progress = false, flow = "nonassociative", mechanisms = { a } }
+  T.ok(rigid.method == "assoc" and rigid.unused == "mechanisms" and tostring(rigid):find("not used: mechanisms", 1, true)
+       and asked.unused == nil and asked.mechanisms_given and asked.mechanisms_given.tried == 1,
+       "W1, mu = inf, given an answer: unused by the default (said so), tried by flow = \"nonassociative\"",
+       ("%s %s"):format(tostring(rigid.unused), tostring(asked.mechanisms_given)))
   T.eq(select(2, pcall(solve, { mechanisms = a })):gsub("^.-:%d+: ", ""),
        "solve: field 'mechanisms' must be a list of results, got one result: write { r }",
        "mechanisms = r, not { r }: said so")
