@@ -61,7 +61,10 @@ function Result.__tostring(r)
     say("  solve with the dead load as the live load, shows how it fails: r.dead:png(file)")
   end
   if r.alpha_assoc and r.method == "seqlp" then
-    local last = r.certified and not r.interrupted and not r.time_up and ", the last one its certificate" or ""
+    -- (r.lps: the associative LP, the one without friction limit, each
+    -- start's and each mechanism given's; a single start ends on its certificate)
+    local last = r.certified and not r.interrupted and not r.time_up and #r.starts == 1
+      and not r.from_mechanism and ", the last one its certificate" or ""
     if r.none_dilates then
       say("  no joint has friction, so none dilates: the associative answer is the")
       say("  non-associative one (no sequence ran)")
@@ -70,7 +73,7 @@ function Result.__tostring(r)
       say("  load's, scaled, and the structure carries it; no collapse, with dilatancy or without")
     elseif r.alpha_assoc == math.huge and r.status == "unbounded" then
       say("  the associative LP and the one without friction are both unbounded: no mechanism")
-      say("  moves, with dilatancy or without (%d LPs in the sequence)", r.lps)
+      say("  moves, with dilatancy or without (%d LPs in all)", r.lps)
     elseif r.alpha_assoc ~= r.alpha_assoc and r.status == "infeasible" then
       say("  the associative LP, where the sequence starts, has no equilibrium either: no LP of the")
       say("  sequence ran")
@@ -84,12 +87,13 @@ function Result.__tostring(r)
       say("  which starts from an associative mechanism, did not run: no non-associative alpha")
     elseif r.alpha_assoc == math.huge then
       say("  no associative alpha (unbounded: with dilatancy no mechanism moves); %d LPs in", r.lps)
-      say("  the sequence%s; its first fixed LP has no friction", last)
+      say("  all%s; its first fixed LP has no friction", last)
     else
-      say("  associative alpha = %.6g%s; %d LPs in the sequence%s", r.alpha_assoc,
+      say("  associative alpha = %.6g%s; %d LPs in all%s", r.alpha_assoc,
           r.certified and "" or " (an upper bound on the non-associative one)", r.lps, last)
     end
-    if r.certified and r.alpha == 0 and r.stands then
+    local from_zero = r.certified and r.alpha == 0 and r.stands -- (doc/theory.md 6, "alpha from zero")
+    if from_zero then
       say("  without dilatancy a mechanism is possible under the dead load alone: forces that fit it")
       say("  exist at alpha = 0 (and below), though the dead load alone also has an equilibrium that")
       say("  holds; which one the structure takes, the model cannot tell (doc/theory.md 6)")
@@ -130,7 +134,7 @@ function Result.__tostring(r)
     elseif r.alpha_settled and r.alpha_settled - r.alpha > 1e-9 * math.abs(r.alpha) then
       say("  the sequence settled at %.6g; its mechanism is a solution from %.6g, the lowest alpha",
           r.alpha_settled, r.alpha)
-      say("  at which forces fit it")
+      say(from_zero and "  of a live load applied from zero" or "  at which forces fit it")
     elseif r.alpha_settled and r.alpha - r.alpha_settled > 1e-9 * math.abs(r.alpha) then
       -- (forces fitting the mechanism at the settled alpha leaned on
       -- motions taken as none, and failed the checks: doc/seqlp.md 12)
@@ -244,6 +248,9 @@ function Result.__tostring(r)
       say("  Ipopt stopped (%s) at alpha %.6g, not a verified answer: the start's answer stands",
           i.status, i.alpha)
     end
+  elseif r.method == "seqlp" and r.lps > 1 then -- (iterations summed over r.lps LPs)
+    say("  %s flow, seqlp method, %s LP: %d iterations over the %d LPs", r.flow, r.lp, r.iterations, r.lps)
+    say("  (the associative LP: %d rows x %d columns)", size.rows, size.columns)
   else
     say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
         r.lp, r.iterations, size.rows, size.columns)
@@ -296,8 +303,10 @@ function Result.__tostring(r)
     if e.flow then
       -- the flow rule's residuals are judged against the slip threshold
       -- (doc/theory.md 6, "Verification of a non-associative answer")
-      say("    normalization %s; the flow rule's (slip threshold %s): complementarity %s,",
-          g(e.normalization), g(r.slip), g(e.complementarity))
+      -- (their tolerance is the threshold up to 1e-3, BL_FLOW_TOL_MAX in src/verify.h)
+      local ftol = math.min(r.slip, 1e-3)
+      say("    normalization %s; the flow rule's (slip threshold %s%s): complementarity %s,",
+          g(e.normalization), g(r.slip), ftol < r.slip and ", tolerance " .. g(ftol) or "", g(e.complementarity))
       say("    work %s, flow %s, dilatancy %s", g(e.work), g(e.flow), g(e.dilatancy))
       -- the motions nearest the threshold (doc/theory.md 6): round-off
       -- below it, a mechanism's slowest part above

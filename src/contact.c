@@ -77,7 +77,7 @@ static void pair_contacts(bl_model *m, int ia, int ib, double tol, double gap, p
     }
     if (near_d > 0.0 && !found && !bl_contact_declared(m, ia, ib)) {
         if (pr->nnear < 5)
-            snprintf(pr->near[pr->nnear], sizeof pr->near[0], "blocks %d and %d (gap %.3g)",
+            snprintf(pr->near[pr->nnear], sizeof pr->near[0], "blocks %d and %d (%.3g apart)",
                      ia + 1, ib + 1, near_d);
         pr->nnear++;
     }

@@ -271,7 +271,7 @@ static int pair3(bl_model *m, int ia, int ib, double tol, double gap, bl_contact
     }
     if (c.near_d > 0.0 && !c.found && !bl_contact_declared(m, ia, ib)) {
         if (pr->nnear < 5)
-            snprintf(pr->near[pr->nnear], sizeof pr->near[0], "blocks %d and %d (gap %.3g)",
+            snprintf(pr->near[pr->nnear], sizeof pr->near[0], "blocks %d and %d (%.3g apart)",
                      ia + 1, ib + 1, c.near_d);
         pr->nnear++;
     }

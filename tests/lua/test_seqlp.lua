@@ -717,6 +717,11 @@ do
     T.ok(assoc.stands and r.stands and r.status == "optimal" and r.alpha >= 0 and r.alpha <= assoc.alpha
          and r.verified, ("a wall that stands under its dead load, %s: not unstable, 0 <= alpha <= %.4f, verified"):format(method, assoc.alpha),
          ("%s %s"):format(r.status, tostring(r.alpha)))
+    if method == "seqlp" and r.alpha == 0 then -- forces fit below 0 too: 0 is not "the lowest"
+      local text = tostring(r)
+      T.ok(text:find("exist at alpha = 0 (and below)", 1, true) and not text:find("at which forces fit it", 1, true),
+           "alpha = 0 from zero: print(r) does not call 0 the lowest alpha at which forces fit", text)
+    end
   end
 end
 -- The motions nearest the slip threshold (doc/theory.md 6): r.motion_gap.below
@@ -768,6 +773,17 @@ do
          ("slip = %g: print(r) points out a motion taken as none above slip / 100 only where there is one"):format(slip),
          ("%g, noted %s"):format(below, tostring(noted)))
   end
+end
+-- The flow rule's residuals are judged against the slip threshold, but
+-- never above 1e-3 (doc/guide.md 5): print(r) shows that tolerance where
+-- slip is above it.
+do
+  model { mu = 0.65 }
+  wall { courses = walls.W1, unit = { 0.4, 0.175 } }
+  local loose, tight = tostring(solve { progress = false, starts = 0, slip = 5e-3 }),
+                       tostring(solve { progress = false, starts = 0, slip = 1e-3 })
+  T.ok(loose:find("(slip threshold 0.005, tolerance 0.001)", 1, true) and tight:find("(slip threshold 0.001)", 1, true),
+       "slip = 5e-3: print(r) names the residuals' tolerance 1e-3; slip = 1e-3: the threshold alone", loose)
 end
 -- solve{ mechanisms = { r } }: a parameter study hands on its last answer.
 -- W1 at mu = 1 certifies a staircase whose sliding joints open as they
