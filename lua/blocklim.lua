@@ -42,18 +42,36 @@ return function(core)
   -- load{ dead = { over = ..., q = ... } } (and live): a distributed load,
   -- given to the core as the point loads it amounts to, once every part of
   -- the command has been checked.
+  -- It returns where each distributed load went, which prints as a line
+  -- per load at the prompt: what lands on supports loads nothing.
   local distributed = require "blocklim.distributed"
+  local Spread = { __tostring = function(sp)
+    local lines = {}
+    for _, k in ipairs { "dead", "live" } do
+      local e = sp[k]
+      if e then
+        local total = e.blocks + e.supports
+        local s = ("%s load: %.6g in all, %.6g on %d free block%s"):format(k, total, e.blocks, e.count,
+          report.plural(e.count))
+        if e.supports > 0 then
+          s = s .. (", %.6g (%.3g %%) on supports, which carry it"):format(e.supports, 100 * e.supports / total)
+        end
+        lines[#lines + 1] = s
+      end
+    end
+    return table.concat(lines, "\n")
+  end }
   local point_load = methods.load
   function methods.load(m, t)
     with_colon(m, "load", "{...}")
     if type(t) ~= "table" then return point_load(m, t) end
-    local points, rest, spread = {}, {}, false
+    local points, rest, spread = {}, {}, nil
     for k, v in pairs(t) do
       if (k == "dead" or k == "live") and type(v) == "table" and (v.over ~= nil or v.q ~= nil) then
-        spread = true
-        for _, p in ipairs(distributed.point_loads(m, core.blocks(m), v, "load " .. k, core.load_ratio)) do
-          points[#points + 1] = { [k] = p }
-        end
+        local loads, blocks, supports = distributed.point_loads(m, core.blocks(m), v, "load " .. k, core.load_ratio)
+        spread = spread or setmetatable({}, Spread)
+        spread[k] = { blocks = blocks, supports = supports, count = #loads }
+        for _, p in ipairs(loads) do points[#points + 1] = { [k] = p } end
       else
         rest[k] = v
       end
@@ -61,6 +79,7 @@ return function(core)
     if not spread then return point_load(m, t) end
     if next(rest) then point_load(m, rest) end
     for _, p in ipairs(points) do point_load(m, p) end
+    return spread
   end
   report.draw = core.draw
   report.vtk = core.vtk

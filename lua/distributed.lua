@@ -259,7 +259,7 @@ local function point_loads_3d(m, n, t, fail, ratio)
   table.sort(xs)
   table.sort(edges, function(e, g) return e.ax < g.ax end)
 
-  local share, order, landed = {}, {}, false
+  local share, order, landed, supported = {}, {}, false, 0 -- (supported: what lands on supports)
   local active, next_edge = {}, 1
   for i = 1, #xs - 1 do
     local a, c = math.max(xs[i], x0), math.min(xs[i + 1], x1)
@@ -294,7 +294,7 @@ local function point_loads_3d(m, n, t, fail, ratio)
           if best then
             landed = true
             local b = best.block
-            if not b.support then
+            do
               -- ∫ q, ∫ x q, ∫ y q over the trapezoid (Gauss, 3 x 3 per piece)
               local F, Fx, Fy, Fz = 0, 0, 0, 0
               local function lo(x) return l.side and l.y or y_at(l.e, x) end
@@ -317,15 +317,19 @@ local function point_loads_3d(m, n, t, fail, ratio)
                   end
                 end
               end
-              local e = share[b.id]
-              if not e then
-                e = { b, 0, 0, 0, 0 }
-                share[b.id], order[#order + 1] = e, b.id
-              end
-              e[2], e[3], e[4], e[5] = e[2] + F, e[3] + Fx, e[4] + Fy, e[5] + Fz
-              if F > 0 and (not b.cell or F > b.cell.F) then -- the block's largest part: a point on its top
-                local x, y = Fx / F, Fy / F
-                b.cell = { F = F, at = { x, y, height(best, x, y) } }
+              if b.support then
+                supported = supported + F
+              else
+                local e = share[b.id]
+                if not e then
+                  e = { b, 0, 0, 0, 0 }
+                  share[b.id], order[#order + 1] = e, b.id
+                end
+                e[2], e[3], e[4], e[5] = e[2] + F, e[3] + Fx, e[4] + Fy, e[5] + Fz
+                if F > 0 and (not b.cell or F > b.cell.F) then -- the block's largest part: a point on its top
+                  local x, y = Fx / F, Fy / F
+                  b.cell = { F = F, at = { x, y, height(best, x, y) } }
+                end
               end
             end
           end
@@ -334,7 +338,7 @@ local function point_loads_3d(m, n, t, fail, ratio)
     end
   end
 
-  return point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx, Fy, Fz)
+  return supported, point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx, Fy, Fz)
     local x, y, z = Fx / F, Fy / F, nil
     -- a carried weight's mass is where the load lies: at its q-weighted
     -- height too (on a stepped top, not the top's height at (x, y))
@@ -394,7 +398,7 @@ local function point_loads_2d(m, n, t, fail, ratio)
     end
     return F, Fx, Fy
   end
-  local landed = false
+  local landed, supported = false, 0 -- (supported: what lands on supports)
   for i = 1, #xs - 1 do
     local a, c = xs[i], xs[i + 1]
     if c > a then
@@ -405,8 +409,10 @@ local function point_loads_2d(m, n, t, fail, ratio)
       end
       if best then
         landed = true
-        if not best.support then
-          local F, Fx, Fy = integrate(a, c, by + bs * (a - xm), bs)
+        local F, Fx, Fy = integrate(a, c, by + bs * (a - xm), bs)
+        if best.support then
+          supported = supported + F
+        else
           local e = share[best.id]
           if not e then
             e = { best, 0, 0, 0 }
@@ -419,7 +425,7 @@ local function point_loads_2d(m, n, t, fail, ratio)
     end
   end
   local region = ("{%.6g, %.6g}"):format(x0, x1)
-  return point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx, Fy)
+  return supported, point_loads_of(share, order, landed, region, fail, ratio, function(b, F, Fx, Fy)
     local x = Fx / F
     -- a carried weight's mass lies at the load's q-weighted height
     return { block = b.id, at = { x, t.weight and Fy / F or (top(b, x)) }, force = { 0, -F } }
@@ -429,7 +435,8 @@ end
 -- The point loads {block, at, force} (or, with t.weight, {block, at, weight}) of a distributed load t on model m
 -- (blocks 1..n), each at most `ratio` times its block's weight, checked
 -- whole before the caller applies any (so that applying them cannot
--- fail); errors start with fn ("load dead").
+-- fail), then the totals on free blocks and on supports (which carry
+-- theirs: it loads nothing); errors start with fn ("load dead").
 function M.point_loads(m, n, t, fn, ratio)
   local function fail(msg) error(fn .. ": " .. msg, 0) end
   for k in pairs(t) do
@@ -445,11 +452,15 @@ function M.point_loads(m, n, t, fn, ratio)
     fail("field 'weight' is for dead loads (a carried weight is dead; the weight-proportional live load "
          .. "acts on it by itself)")
   end
-  local loads = m:dim() == 3 and point_loads_3d(m, n, t, fail, ratio) or point_loads_2d(m, n, t, fail, ratio)
+  local supported, loads
+  if m:dim() == 3 then supported, loads = point_loads_3d(m, n, t, fail, ratio)
+  else supported, loads = point_loads_2d(m, n, t, fail, ratio) end
+  local carried = 0
+  for _, l in ipairs(loads) do carried = carried - l.force[#l.force] end
   if t.weight then -- each resultant, straight down, as the weight it is
     for _, l in ipairs(loads) do l.weight, l.force = -l.force[#l.force], nil end
   end
-  return loads
+  return loads, carried, supported
 end
 
 return M

@@ -98,4 +98,10 @@ void bl_lp_cold(bl_lp *lp)
 {
     if (lp->engine->cold) lp->engine->cold(lp->impl);
 }
+int bl_lp_tighten(bl_lp *lp, double factor)
+{
+    if (!lp->engine->tighten) return -1;
+    lp->engine->tighten(lp->impl, factor);
+    return 0;
+}
 const char *bl_lp_engine(const bl_lp *lp) { return lp->engine->name; }

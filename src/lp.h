@@ -143,6 +143,12 @@ int bl_lp_warm(bl_lp *lp, const double *x, const double *zl, const double *zu, c
  * whose warm start costs it little. */
 void bl_lp_cold(bl_lp *lp);
 
+/* The next solve goes on from the last answer with the engine's
+ * feasibility tolerances times factor (< 1), for an answer that the
+ * verification finds short of its own tolerance.  -1 when the engine
+ * cannot (the interior point, whose tolerances stop its path). */
+int bl_lp_tighten(bl_lp *lp, double factor);
+
 /* Non-zeros of the interior point's Cholesky factor (0 for the simplex). */
 double bl_lp_factor_nnz(const bl_lp *lp);
 /* Writes p to file in MPS format, as the minimization of -obj (free MPS

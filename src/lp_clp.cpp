@@ -192,6 +192,16 @@ static bl_lp_status solve(void *e)
     }
 }
 
+// Tighter tolerances, and the primal simplex from the basis next: the
+// reduced costs it left within the old tolerance may now price in.
+static void tighten(void *e, double factor)
+{
+    clp_lp *lp = static_cast<clp_lp *>(e);
+    lp->model.setPrimalTolerance(lp->model.primalTolerance() * factor);
+    lp->model.setDualTolerance(lp->model.dualTolerance() * factor);
+    lp->objective_changed = true;
+}
+
 static const double *primal(const void *e) { return static_cast<const clp_lp *>(e)->x.data(); }
 static const double *dual(const void *e) { return static_cast<const clp_lp *>(e)->y.data(); }
 static int iterations(const void *e) { return static_cast<const clp_lp *>(e)->iterations; }
@@ -226,5 +236,5 @@ extern "C" int bl_lp_write_mps(const bl_lp_problem *p, const char *file, bl_erro
 
 extern "C" const bl_lp_backend bl_lp_clp_engine = {
     "simplex", create, destroy, set_bounds, set_objective, solve, primal, dual, iterations, factor_nnz, ray,
-    NULL, NULL, NULL, NULL,
+    NULL, NULL, NULL, NULL, tighten,
 };

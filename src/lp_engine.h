@@ -22,6 +22,7 @@ typedef struct bl_lp_backend {
     int (*warm)(void *e, const double *x, const double *zl, const double *zu, const double *y,
                 double mu); /* NULL: the engine cannot (lp.h, bl_lp_warm) */
     void (*cold)(void *e);   /* NULL: nothing to forget (lp.h, bl_lp_cold) */
+    void (*tighten)(void *e, double factor); /* NULL: the engine cannot (lp.h, bl_lp_tighten) */
 } bl_lp_backend;
 
 /* Where the interior point uses more than one core: its loops over the

@@ -1152,5 +1152,5 @@ static void cold(void *e)
 
 const bl_lp_backend bl_lp_ipm_engine = {
     "ipm", create, destroy, set_bounds, set_objective, solve, primal, dual, iterations, factor_nnz, ray,
-    mark, rewind_to_mark, warm, cold,
+    mark, rewind_to_mark, warm, cold, NULL,
 };

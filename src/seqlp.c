@@ -52,6 +52,7 @@ typedef struct run {
     int planned;           /* starts in all, once start 0 has decided it */
     int found;             /* a certified answer is kept in best_* */
     int least_n;           /* the fixed LPs prefer the least normal force */
+    int switched;          /* the fixed LPs went to the other engine after a failure */
     int bounded;           /* some fixed LP of the run had an answer */
     double first_alpha;    /* the alpha of the first one */
     int cone_other;        /* lp_cone was made with another objective than the
@@ -850,6 +851,25 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
             r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &simplex, err);
             if (!r->lp_fixed) return -1;
             st = bl_lp_solve(r->lp_fixed);
+            r->switched = 1;
+        } else if ((st == BL_LP_FAILED || (st == BL_LP_ITERATION_LIMIT && o->base.iterations == 0)) &&
+                   o->base.lp == BL_LP_AUTO && !r->switched && strcmp(bl_lp_engine(r->lp_fixed), "simplex") == 0) {
+            /* The simplex can cycle among degenerate bases (a two-bay
+             * arcade at mu = inf: its cap after 14 s, at LP 20, where the
+             * interior point certified 0.2100): the interior point solves
+             * the LP again, and every later fixed LP of the run */
+            s->lps++;
+            s->iterations += bl_lp_iterations(r->lp_fixed);
+            if (o->base.verbose)
+                fprintf(stderr, "seqlp start %d LP %d: the simplex stopped (%s), again on the interior point\n",
+                        start_number(s), j + 1, st == BL_LP_FAILED ? "failed" : "its cap");
+            bl_solve_options ipm = o->base;
+            ipm.lp = BL_LP_IPM;
+            bl_lp_free(r->lp_fixed);
+            r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &ipm, err);
+            if (!r->lp_fixed) return -1;
+            st = bl_lp_solve(r->lp_fixed);
+            r->switched = 1;
         }
         s->lps++;
         s->iterations += bl_lp_iterations(r->lp_fixed);
@@ -1629,6 +1649,12 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
          * not be drawn does: the restarts' lower friction met more such
          * LPs, and W1 at mu = 20 ran 3 of its 10 */
         if (k > 0 && stop != BL_LP_INTERRUPTED && stop != BL_LP_TIME_LIMIT) stop = BL_LP_OPTIMAL;
+        /* and in start 0, unless the cap is the user's (solve{ iterations
+         * }): the restarts and retries that follow an uncertified start
+         * 0 still run (a two-bay arcade at mu = inf: numerical trouble at
+         * LP 20 of start 0 ended the solve) */
+        if (k == 0 && (stop == BL_LP_FAILED || (stop == BL_LP_ITERATION_LIMIT && o->base.iterations == 0)))
+            stop = BL_LP_OPTIMAL;
         if (k == 0) {
             first = ss;
             if (first.done == first.cap) memcpy(r.n_first, r.n, (size_t)np * sizeof *r.n);

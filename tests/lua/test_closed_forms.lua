@@ -309,8 +309,14 @@ do
     box { size = { b, d, h } }
   end
   pier()
-  load { dead = { over = { { -2, -2 }, { 2, 2 } }, q = 2 } }
+  local went = load { dead = { over = { { -2, -2 }, { 2, 2 } }, q = 2 } }
   T.near(solve { flow = "associative" }.alpha, 0.5, 1e-9, "3D: q = 2 on a box's top: alpha = (1 + Q/W) b/h = 0.5")
+  -- where it went: q b d on the box, q (4 x 4 - b d) on the ground
+  T.ok(went and went.dead.count == 1 and math.abs(went.dead.blocks - 2 * b * d) <= 1e-12
+       and math.abs(went.dead.supports - 2 * (16 - b * d)) <= 1e-12
+       and tostring(went) == "dead load: 32 in all, 1 on 1 free block, 31 (96.9 %) on supports, which carry it",
+       "3D: load{} returns where q = 2 over 4 x 4 went: q b d = 1 on the box, 31 on the ground (to 1e-12)",
+       tostring(went))
   pier()
   load { dead = { over = { { -2, -2 }, { 2, 2 } }, q = function(x) return k * math.max(0, x + b / 2) end } }
   local Q = k * d * b ^ 2 / 2

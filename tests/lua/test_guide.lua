@@ -110,4 +110,23 @@ for i, code in ipairs(blocks) do
     T.ok(diff == nil, name .. " prints what the guide shows", diff and (diff .. "\n(block starts: " .. first .. ")"))
   end
 end
+
+-- The guide's summary of the commands (section 9) names every field each
+-- command accepts, as help lists them (test_bad_input.lua holds help to
+-- the commands' own messages).
+for _, c in ipairs(require("blocklim.help").commands) do
+  local name, fields = c[1], c[3]
+  local row -- the last table row whose first cell names the command: the summary's
+  for line in text:gmatch("\n(| `[^\n]*)") do
+    if line:match("^|([^|]*)|"):find("`" .. name .. "{", 1, true) then row = line end
+  end
+  if fields and name ~= "compare" then
+    local missing = {}
+    for f in fields:gmatch("[%w_]+") do
+      if not (row and row:find("`" .. f .. "`", 1, true)) then missing[#missing + 1] = f end
+    end
+    T.ok(row and #missing == 0, ("the guide's summary of %s{} names its fields"):format(name),
+         row and "missing: " .. table.concat(missing, ", ") or "no row")
+  end
+end
 T.done()

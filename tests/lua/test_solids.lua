@@ -562,7 +562,10 @@ box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
 box { size = { 1, 1, 1 } }
 T.near(current():interface_info(1).mu_t, 0.6 * lever, 1e-12, "interface_info: the default mu_t, mu times 0.38260")
 interface { 1, 2, mu_t = 0.1 }
-T.eq(solve { flow = "associative" }.interfaces[1].mu_t, 0.1, "r.interfaces: an overridden mu_t")
+local rr = solve { flow = "associative" }
+T.eq(rr.interfaces[1].mu_t, 0.1, "r.interfaces: an overridden mu_t")
+T.ok(tostring(rr):find("every joint in the resultant model", 1, true),
+     "print(r) names the resultant interface model of every joint (model{ interface })", tostring(rr))
 for _, flow in ipairs { "associative", "nonassociative" } do
   T.near(torque({ interface = "resultant", cohesion = 0.5 }, flow), (0.6 * 2 + 0.5 * 1) * lever, 1e-7,
          "resultant model with cohesion c = 0.5, pure torque, " .. flow .. ": (mu N + c A) times the mean distance")
