@@ -172,6 +172,12 @@ function Result.__tostring(r)
       elseif why == "below" then
         say("  (restarts by default: %s certified %.6g,", which, first)
         say("  more than 10 %% below the associative alpha)")
+      elseif why == "probe" then -- (BL_SEQLP_PROBE, BL_SEQLP_PROBE_DROP in src/seqlp.h)
+        say("  (two restarts by default probed start %d's answer, %.6g, on a model of this size;", k, first)
+        say("  neither certified more than 1 %% below it)")
+      elseif why == "probe found" then
+        say("  (restarts by default: of two that probed start %d's answer, %.6g, one certified more", k, first)
+        say("  than 1 %% below it, and the search went on)")
       elseif why == "near rigid" then
         say("  (restarts by default: the associative alpha is within 10 %% of unlimited friction's,")
         say("  %.6g; %s certified %.6g)", r.alpha_rigid, which, first)

@@ -141,6 +141,15 @@ static int has_rigid(const bl_model *m)
     return 0;
 }
 
+/* Whether the model is of the size up to which the default searches
+ * where one start's answer leaves doubt (BL_SEQLP_MARGIN_ROWS,
+ * BL_SEQLP_MARGIN_COLUMNS3). */
+static int medium(const run *r, const bl_model *mc)
+{
+    return (mc->dim == 2 && r->fixed->nrows <= BL_SEQLP_MARGIN_ROWS) ||
+           (mc->dim == 3 && r->fixed->ncols <= BL_SEQLP_MARGIN_COLUMNS3);
+}
+
 /* Whether the default runs BL_SEQLP_SEARCH restarts after the first start
  * to certify (start 0, or a retry where start 0 did not), and why
  * (r.restarts_why), or NULL: it settled at the associative alpha; or, up
@@ -153,9 +162,7 @@ static const char *search_after(const run *r, const bl_solution *s, const bl_mod
 {
     if (!r->found) return NULL;
     if (r->best_settled >= s->alpha_assoc - o->settle * fabs(s->alpha_assoc)) return "settled";
-    int medium = (mc->dim == 2 && r->fixed->nrows <= BL_SEQLP_MARGIN_ROWS) ||
-                 (mc->dim == 3 && r->fixed->ncols <= BL_SEQLP_MARGIN_COLUMNS3);
-    if (!medium) return NULL;
+    if (!medium(r, mc)) return NULL;
     if (isfinite(s->alpha_assoc) && r->best_alpha < s->alpha_assoc - BL_SEQLP_MARGIN * fabs(s->alpha_assoc))
         return "below";
     if (isfinite(s->alpha_rigid) && !has_rigid(mc) &&
@@ -1590,6 +1597,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
      * How many restarts follow is decided after start 0, or after the
      * first retry to certify where start 0 did not (below). */
     int retry = 0, starts = 0;
+    double probe = NAN; /* the answer two restarts probe, or NaN (below) */
     start_state first = {0}; /* where start 0 stopped */
     for (int k = 0; k == 0 || (k <= starts && stop == BL_LP_OPTIMAL); k++) {
         /* (after an unbounded associative LP, below the first fixed LP's
@@ -1690,15 +1698,30 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                         (mc->dim == 3 && r.fixed->ncols <= BL_SEQLP_SEARCH_COLUMNS3);
             const char *why = small ? "small" : s->assoc_is_solution ? "solution" : search_after(&r, s, mc, o);
             retry = sliding && o->starts < 0 && !why && !r.found && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
+            /* where none of these holds on a model of that size, two
+             * restarts probe start 0's answer (BL_SEQLP_PROBE) */
+            probe = sliding && o->starts < 0 && !why && r.found && medium(&r, mc) ? r.best_alpha : NAN;
             starts = !sliding          ? 0
                      : o->starts >= 0  ? o->starts
                      : small           ? BL_SEQLP_SEARCH_SMALL
                      : why             ? BL_SEQLP_SEARCH
                      : retry           ? BL_SEQLP_RETRIES
+                     : probe == probe  ? BL_SEQLP_PROBE
                                        : 0;
             r.planned = starts + 1;
             /* why the default restarts, for the user (r.restarts_why) */
-            if (sliding && o->starts < 0 && starts > 0) s->restarts_why = why ? why : "not certified";
+            if (sliding && o->starts < 0 && starts > 0)
+                s->restarts_why = why ? why : probe == probe ? "probe" : "not certified";
+        } else if (probe == probe && k == starts) {
+            /* the probe's last restart: the search goes on where the
+             * probe certified more than BL_SEQLP_PROBE_DROP below the
+             * answer it probed */
+            if (r.best_alpha < probe - BL_SEQLP_PROBE_DROP * fabs(probe)) {
+                starts = k - BL_SEQLP_PROBE + BL_SEQLP_SEARCH;
+                s->restarts_why = "probe found";
+            }
+            probe = NAN;
+            r.planned = starts + 1;
         } else if (retry && r.found) {
             /* the first retry to certify: the restarts start 0 would have
              * decided on its answer follow it (the running bond of 16 x 16
@@ -1707,9 +1730,11 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
              * 10 restarts after it 0.63097; doc/seqlp.md 18) */
             const char *why = search_after(&r, s, mc, o);
             retry = 0;
-            starts = why ? k + BL_SEQLP_SEARCH : k;
+            probe = !why && medium(&r, mc) ? r.best_alpha : NAN;
+            starts = why ? k + BL_SEQLP_SEARCH : probe == probe ? k + BL_SEQLP_PROBE : k;
             r.planned = starts + 1;
             if (why) s->restarts_why = why;
+            if (probe == probe) s->restarts_why = "probe";
         }
     }
 

@@ -113,6 +113,16 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
 #define BL_SEQLP_MARGIN_ROWS 2000
 #define BL_SEQLP_MARGIN_COLUMNS3 10000
 
+/* Where none of those rules holds on a model of that size, the default
+ * runs BL_SEQLP_PROBE restarts, the first of those BL_SEQLP_SEARCH, and
+ * the rest of them only where the probe certified more than
+ * BL_SEQLP_PROBE_DROP below the answer it probed: a dome of 6 x 16 at
+ * mu = 0.7 certified 0.4640 with one start, 0.961 of its associative
+ * alpha and far from unlimited friction's, where its second restart
+ * certifies 0.3723 (doc/seqlp.md 18). */
+#define BL_SEQLP_PROBE 2
+#define BL_SEQLP_PROBE_DROP 0.01
+
 /* The friction at which a rigid joint (mu = inf) slides in start 0's
  * search, its fixed LPs and stress states (not in the certificates, which
  * hold it rigid unless it carries nothing): an infinite one would never
