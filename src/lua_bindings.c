@@ -1116,6 +1116,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
             set_boolean(L, "certified", st->alpha == st->alpha);
             if (st->alpha == st->alpha) set_number(L, "alpha", st->alpha);
             if (st->continues) set_integer(L, "continues", st->continues);
+            if (isfinite(st->search_mu)) set_number(L, "search_mu", st->search_mu);
             lua_rawseti(L, -2, k + 1);
         }
         lua_setfield(L, -2, "starts");

@@ -516,7 +516,7 @@ static int start_history(bl_solution *s, double from)
     bl_start *st = realloc(s->start, (size_t)(s->nstarts + 1) * sizeof *st);
     if (!st) return -1;
     s->start = st;
-    st[s->nstarts++] = (bl_start){.first = s->nhistory, .alpha = NAN};
+    st[s->nstarts++] = (bl_start){.first = s->nhistory, .alpha = NAN, .search_mu = INFINITY};
     return append(s, from);
 }
 
@@ -751,6 +751,13 @@ static int search_friction(run *r, int k, bl_error *err)
     int ntried = (int)(sizeof tried / sizeof tried[0]);
     double rigid = k == 0 ? BL_SEQLP_MU_RIGID : tried[(k - 1) % ntried];
     double cap = k == 0 ? INFINITY : rigid;
+    if (k < 0) { /* BL_SEQLP_LOW of the highest finite friction */
+        double top = 0.0;
+        for (int j = 0; j < r->model->ninterfaces; j++)
+            if (isfinite(r->model->interfaces[j].mu)) top = fmax(top, r->model->interfaces[j].mu);
+        rigid = BL_SEQLP_MU_RIGID;
+        cap = BL_SEQLP_LOW * top;
+    }
     if (rigid == r->mu_rigid && cap == r->mu_cap) return 0;
     r->mu_rigid = rigid;
     r->mu_cap = cap;
@@ -1599,7 +1606,28 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     int retry = 0, starts = 0;
     double probe = NAN; /* the answer two restarts probe, or NaN (below) */
     start_state first = {0}; /* where start 0 stopped */
-    for (int k = 0; k == 0 || (k <= starts && stop == BL_LP_OPTIMAL); k++) {
+    int low_from = 0; /* the first of the restarts at a lower friction, or 0 */
+    for (int k = 0; k == 0 || stop == BL_LP_OPTIMAL; k++) {
+        if (k > starts) {
+            /* The restarts planned have run (or been skipped).  After a
+             * probe, the rest of the search where one of its two
+             * certified more than BL_SEQLP_PROBE_DROP below the answer it
+             * probed; after a search of BL_SEQLP_SEARCH restarts on a
+             * model above the small sizes, BL_SEQLP_LOW_STARTS more at a
+             * lower friction (search_friction). */
+            if (probe == probe && r.best_alpha < probe - BL_SEQLP_PROBE_DROP * fabs(probe)) {
+                starts = k - 1 - BL_SEQLP_PROBE + BL_SEQLP_SEARCH;
+                s->restarts_why = "probe found";
+            }
+            probe = NAN;
+            if (k > starts && !low_from && sliding && o->starts < 0 && starts >= BL_SEQLP_SEARCH &&
+                s->restarts_why && strcmp(s->restarts_why, "small") != 0 && bl_model_finite_friction(mc)) {
+                low_from = k;
+                starts = k + BL_SEQLP_LOW_STARTS - 1;
+            }
+            r.planned = starts + 1;
+            if (k > starts) break;
+        }
         /* (after an unbounded associative LP, below the first fixed LP's
          * answer, at 0 where none had one) */
         double from = r.found ? r.best_alpha
@@ -1613,7 +1641,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
          * second, 3 (from 1 the 4 x 12 dome at mu = inf did not certify
          * in its 3 retries; from 3 its first certified, doc/seqlp.md 17) */
         int rigid_retry = retry && has_rigid(mc);
-        if (search_friction(&r, rigid_retry ? k + 1 : (k + 1) / 2, err)) goto fail;
+        if (search_friction(&r, low_from && k >= low_from ? -1 : rigid_retry ? k + 1 : (k + 1) / 2, err))
+            goto fail;
         if (k == 0) {
             for (int p = 0; p < np; p++) r.n[p] = locked ? 0.0 : s->force[mc->dim * p] / r.fixed->W0;
             bl_lp_status st; /* (an LP that fails leaves the associative forces) */
@@ -1652,6 +1681,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         /* from a path that went deep, start 0 begins at the path's alpha */
         start_state ss = fresh_start(o, k == 0 && s->path_taken && pj.res.deep ? s->path_alpha : from);
         if (timed_start(&r, o, s, &ss, 0, lps0, its0, tk, &stop, err) < 0) goto fail;
+        if (r.states != r.cone) s->start[s->nstarts - 1].search_mu = r.mu_cap; /* (where it binds) */
         /* an LP that failed in a restart (its limit, numerical trouble)
          * ends that restart alone, its note kept, as a state that could
          * not be drawn does: the restarts' lower friction met more such
@@ -1712,16 +1742,6 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             /* why the default restarts, for the user (r.restarts_why) */
             if (sliding && o->starts < 0 && starts > 0)
                 s->restarts_why = why ? why : probe == probe ? "probe" : "not certified";
-        } else if (probe == probe && k == starts) {
-            /* the probe's last restart: the search goes on where the
-             * probe certified more than BL_SEQLP_PROBE_DROP below the
-             * answer it probed */
-            if (r.best_alpha < probe - BL_SEQLP_PROBE_DROP * fabs(probe)) {
-                starts = k - BL_SEQLP_PROBE + BL_SEQLP_SEARCH;
-                s->restarts_why = "probe found";
-            }
-            probe = NAN;
-            r.planned = starts + 1;
         } else if (retry && r.found) {
             /* the first retry to certify: the restarts start 0 would have
              * decided on its answer follow it (the running bond of 16 x 16

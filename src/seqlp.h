@@ -123,6 +123,18 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
 #define BL_SEQLP_PROBE 2
 #define BL_SEQLP_PROBE_DROP 0.01
 
+/* After a default search of BL_SEQLP_SEARCH restarts (not the small
+ * models' BL_SEQLP_SEARCH_SMALL, where they found nothing more on W1, W4,
+ * W5 and a running bond of 8 x 8), BL_SEQLP_LOW_STARTS more whose search (stress state, fixed LPs) caps
+ * every joint's friction at BL_SEQLP_LOW times the highest finite one;
+ * the certificates hold each joint to its own.  Lower friction lets the
+ * search reach mechanisms that slide more, which can be solutions at the
+ * model's own friction too: a façade 8 x 3 x 10 at mu = 0.7 certified
+ * 0.23049 after 10 restarts and 0.15680 after these two; a façade
+ * 4 x 2 x 4 at mu = 0.6, 0.30612 and 0.25164 (doc/seqlp.md 18). */
+#define BL_SEQLP_LOW 0.5
+#define BL_SEQLP_LOW_STARTS 2
+
 /* The friction at which a rigid joint (mu = inf) slides in start 0's
  * search, its fixed LPs and stress states (not in the certificates, which
  * hold it rigid unless it carries nothing): an infinite one would never

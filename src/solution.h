@@ -73,6 +73,8 @@ typedef struct bl_start {
     int certificates, nearest; /* certificates tried, nearest-force steps */
     double seconds;
     double alpha;
+    double search_mu; /* the friction its search was capped at (its stress
+                         state, fixed LPs), or inf: each joint's own */
 } bl_start;
 
 typedef struct bl_solution {

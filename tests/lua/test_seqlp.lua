@@ -634,8 +634,9 @@ do
     { 0.5, 1, 1, 1.5, 1.5, 1, -1, -2, 1, 1, 1, 0.5, 2 }, { 0.5, 1.5, 2, 2, 1, 2, 1, 2, 1, 1, 1 } } }
   local r = solve { progress = false }
   local r3 = solve { starts = 3, progress = false }
-  -- (a restart whose stress state cannot be drawn is skipped: 10 or 11 starts)
-  T.ok(r.certified and r.verified and r.restarts_why == "settled" and #r.starts >= 10 and #r.starts <= 11,
+  -- (a restart whose stress state cannot be drawn is skipped: 10 or 11
+  -- starts, and up to 2 after them at half the friction)
+  T.ok(r.certified and r.verified and r.restarts_why == "settled" and #r.starts >= 10 and #r.starts <= 13,
        "104 blocks, first start at the associative alpha: 10 restarts follow",
        ("%d starts, %s"):format(#r.starts, tostring(r.restarts_why)))
   T.ok(r3.certified and r.alpha <= r3.alpha + 1e-9 and r.alpha < 0.5 * r.alpha_assoc,
