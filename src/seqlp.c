@@ -1735,7 +1735,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                      : o->starts >= 0  ? o->starts
                      : small           ? BL_SEQLP_SEARCH_SMALL
                      : why             ? BL_SEQLP_SEARCH
-                     : retry           ? BL_SEQLP_RETRIES
+                     : retry           ? (medium(&r, mc) ? BL_SEQLP_RETRIES_MEDIUM : BL_SEQLP_RETRIES)
                      : probe == probe  ? BL_SEQLP_PROBE
                                        : 0;
             r.planned = starts + 1;

@@ -60,6 +60,12 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
  * start takes seconds (a start of the 10,050-block wall takes minutes, and
  * none has certified it). */
 #define BL_SEQLP_RETRIES 3
+/* On models of the medium sizes (BL_SEQLP_MARGIN_ROWS,
+ * BL_SEQLP_MARGIN_COLUMNS3), where a start takes seconds at most, up to
+ * 10: an arcade of three bays, 124 blocks, at mu = 5 certified nothing
+ * in start 0 and 3 retries, and 0.24020 in the 9th (6.5 s;
+ * doc/seqlp.md 18). */
+#define BL_SEQLP_RETRIES_MEDIUM 10
 
 /* By default small models get BL_SEQLP_SEARCH_SMALL restarts, whatever
  * start 0 did: one start's answer is a solution, not always the lowest,
