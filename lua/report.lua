@@ -65,7 +65,7 @@ function Result.__tostring(r)
     -- (r.lps: the associative LP, the one without friction limit, each
     -- start's and each mechanism given's; a single start ends on its certificate)
     local last = r.certified and not r.interrupted and not r.time_up and #r.starts == 1
-      and not r.from_mechanism and ", the last one its certificate" or ""
+      and not r.mechanisms_given and ", the last one its certificate" or ""
     if r.none_dilates then
       say("  no joint has friction, so none dilates: the associative answer is the")
       say("  non-associative one (no sequence ran)")
@@ -173,8 +173,8 @@ function Result.__tostring(r)
         say("  (restarts by default: %s certified %.6g,", which, first)
         say("  more than 10 %% below the associative alpha)")
       elseif why == "probe" then -- (BL_SEQLP_PROBE, BL_SEQLP_PROBE_DROP in src/seqlp.h)
-        say("  (two restarts by default probed start %d's answer, %.6g, on a model of this size;", k, first)
-        say("  neither certified more than 1 %% below it)")
+        say("  (restarts by default probed start %d's answer, %.6g, on a model of this size; none", k, first)
+        say("  certified more than 1 %% below it)")
       elseif why == "probe found" then
         say("  (restarts by default: of two that probed start %d's answer, %.6g, one certified more", k, first)
         say("  than 1 %% below it, and the search went on)")
@@ -184,6 +184,12 @@ function Result.__tostring(r)
       end
     elseif r.certified then
       say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")
+    end
+    local lower = 0 -- starts whose search capped the friction (the certificates did not)
+    for _, st in ipairs(r.starts) do lower = lower + (st.search_mu and 1 or 0) end
+    if lower > 0 then
+      say("  (%d of them searched at a lower friction, r.starts[k].search_mu; every certificate holds", lower)
+      say("  each joint to its own)")
     end
     if went_on then
       say("  start %d, cut at its cap, went on for %d more fixed LPs%s", went_on.continues,
@@ -258,6 +264,10 @@ function Result.__tostring(r)
   elseif r.method == "seqlp" and r.lps > 1 then -- (iterations summed over r.lps LPs)
     say("  %s flow, seqlp method, %s LP: %d iterations over the %d LPs", r.flow, r.lp, r.iterations, r.lps)
     say("  (the associative LP: %d rows x %d columns)", size.rows, size.columns)
+    if r.lp_switched then
+      say("  (the fixed LPs went to the %s after one the other engine could not finish)",
+          r.lp == "ipm" and "interior point" or "simplex")
+    end
   else
     say("  %s flow, %s method, %s LP: %d iterations, %d rows x %d columns", r.flow, r.method,
         r.lp, r.iterations, size.rows, size.columns)
@@ -637,7 +647,7 @@ function report.wrap(r)
     end
     Result2D.__index = function(_, k) return Result[k] end -- (Tab then reads __fields)
   end
-  return setmetatable(r, r.mechanism and r.mechanism[1] and not three and Result2D or Result)
+  return setmetatable(r, r.dim == 2 and Result2D or Result)
 end
 
 return report

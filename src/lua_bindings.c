@@ -1053,6 +1053,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
     if (!isnan(s->alpha_min)) set_number(L, "alpha_min", s->alpha_min);
     set_string(L, "method", s->method);
     set_string(L, "flow", s->flow);
+    set_integer(L, "dim", m->dim);
     for (int k = 0; k < m->ninterfaces; k++)
         if (isinf(m->interfaces[k].mu)) {
             set_boolean(L, "rigid_joints", 1); /* some joint has mu = inf */
@@ -1076,6 +1077,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
         set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
         set_mechanisms_given(L, s);
         if (s->restarts_why) set_string(L, "restarts_why", s->restarts_why);
+        if (s->lp_switched) set_boolean(L, "lp_switched", 1);
         if (s->live_scales_dead) set_boolean(L, "live_scales_dead", 1);
         if (s->none_dilates) set_boolean(L, "none_dilates", 1);
         set_integer(L, "lps", s->lps);

@@ -743,20 +743,22 @@ static void fixed_bounds(run *r)
  * friction) at the k-th of BL_SEQLP_MU_TRIED in turn, rigid joints at it
  * and others at most at it: a low friction lets the search find
  * mechanisms that open as they slide, which high friction hides (W1 at
- * mu = 20: 1.861 instead of 0.686; doc/seqlp.md 16).  -1 with err set
- * when the system cannot be made. */
+ * mu = 20: 1.861 instead of 0.686; doc/seqlp.md 16), and at k < 0 (the
+ * restarts after a search, BL_SEQLP_LOW_STARTS) its finite frictions at
+ * most BL_SEQLP_LOW of the highest.  -1 with err set when the system
+ * cannot be made. */
 static int search_friction(run *r, int k, bl_error *err)
 {
     static const double tried[] = BL_SEQLP_MU_TRIED;
     int ntried = (int)(sizeof tried / sizeof tried[0]);
-    double rigid = k == 0 ? BL_SEQLP_MU_RIGID : tried[(k - 1) % ntried];
-    double cap = k == 0 ? INFINITY : rigid;
-    if (k < 0) { /* BL_SEQLP_LOW of the highest finite friction */
+    double rigid = BL_SEQLP_MU_RIGID, cap = INFINITY;
+    if (k < 0) { /* BL_SEQLP_LOW of the highest finite friction, rigid joints as in start 0 */
         double top = 0.0;
         for (int j = 0; j < r->model->ninterfaces; j++)
             if (isfinite(r->model->interfaces[j].mu)) top = fmax(top, r->model->interfaces[j].mu);
-        rigid = BL_SEQLP_MU_RIGID;
         cap = BL_SEQLP_LOW * top;
+    } else if (k > 0) {
+        rigid = cap = tried[(k - 1) % ntried];
     }
     if (rigid == r->mu_rigid && cap == r->mu_cap) return 0;
     r->mu_rigid = rigid;
@@ -841,46 +843,33 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
             if (!r->lp_fixed) return -1;
             st = bl_lp_solve(r->lp_fixed);
         }
+        int ipm = strcmp(bl_lp_engine(r->lp_fixed), "ipm") == 0;
         if ((st == BL_LP_FAILED || (st == BL_LP_ITERATION_LIMIT && o->base.iterations == 0)) &&
-            o->base.lp == BL_LP_AUTO && strcmp(bl_lp_engine(r->lp_fixed), "ipm") == 0 &&
-            bl_simplex_rescues(s->model, f->nrows)) {
-            /* Round-off can stop the interior point short of the answer
-             * (an arch of 1,500 voussoirs at mu = inf): as in the
-             * associative solve, the simplex solves the LP again, and
-             * every later fixed LP of the run from its basis; with its own
-             * objective, if the least normal force did not help (its cost
-             * moved the mechanism: admissibility 1.3e-7 on that arch) */
-            if (least_now) {
+            o->base.lp == BL_LP_AUTO && !r->switched && (!ipm || bl_simplex_rescues(s->model, f->nrows))) {
+            /* Under lp = "auto", once per run, the other engine solves an
+             * LP that this one cannot finish, and every later fixed LP of
+             * the run.  Round-off can stop the interior point short of the
+             * answer (an arch of 1,500 voussoirs at mu = inf): as in the
+             * associative solve, the simplex, from its basis then, with
+             * its own objective if the least normal force did not help
+             * (its cost moved the mechanism: admissibility 1.3e-7 on that
+             * arch).  The simplex can cycle among degenerate bases (a
+             * two-bay arcade at mu = inf: its cap after 14 s, at LP 20,
+             * where the interior point certified 0.2100). */
+            if (least_now && ipm) {
                 r->least_n = 0;
                 bl_system_cost_normal(f, -BL_LEAST_N, r->fixed->obj);
             }
             s->lps++;
             s->iterations += bl_lp_iterations(r->lp_fixed);
             if (o->base.verbose)
-                fprintf(stderr, "seqlp start %d LP %d: numerical trouble, again on the simplex\n",
-                        start_number(s), j + 1);
-            bl_solve_options simplex = o->base;
-            simplex.lp = BL_LP_SIMPLEX;
+                fprintf(stderr, "seqlp start %d LP %d: %s, again on the %s\n", start_number(s), j + 1,
+                        st == BL_LP_FAILED ? "the engine failed" : "the engine's iteration cap",
+                        ipm ? "simplex" : "interior point");
+            bl_solve_options other = o->base;
+            other.lp = ipm ? BL_LP_SIMPLEX : BL_LP_IPM;
             bl_lp_free(r->lp_fixed);
-            r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &simplex, err);
-            if (!r->lp_fixed) return -1;
-            st = bl_lp_solve(r->lp_fixed);
-            r->switched = 1;
-        } else if ((st == BL_LP_FAILED || (st == BL_LP_ITERATION_LIMIT && o->base.iterations == 0)) &&
-                   o->base.lp == BL_LP_AUTO && !r->switched && strcmp(bl_lp_engine(r->lp_fixed), "simplex") == 0) {
-            /* The simplex can cycle among degenerate bases (a two-bay
-             * arcade at mu = inf: its cap after 14 s, at LP 20, where the
-             * interior point certified 0.2100): the interior point solves
-             * the LP again, and every later fixed LP of the run */
-            s->lps++;
-            s->iterations += bl_lp_iterations(r->lp_fixed);
-            if (o->base.verbose)
-                fprintf(stderr, "seqlp start %d LP %d: the simplex stopped (%s), again on the interior point\n",
-                        start_number(s), j + 1, st == BL_LP_FAILED ? "failed" : "its cap");
-            bl_solve_options ipm = o->base;
-            ipm.lp = BL_LP_IPM;
-            bl_lp_free(r->lp_fixed);
-            r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &ipm, err);
+            r->lp_fixed = bl_solve_lp(f, r->lo, r->hi, NULL, &other, err);
             if (!r->lp_fixed) return -1;
             st = bl_lp_solve(r->lp_fixed);
             r->switched = 1;
@@ -1681,17 +1670,20 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         /* from a path that went deep, start 0 begins at the path's alpha */
         start_state ss = fresh_start(o, k == 0 && s->path_taken && pj.res.deep ? s->path_alpha : from);
         if (timed_start(&r, o, s, &ss, 0, lps0, its0, tk, &stop, err) < 0) goto fail;
-        if (r.states != r.cone) s->start[s->nstarts - 1].search_mu = r.mu_cap; /* (where it binds) */
-        /* an LP that failed in a restart (its limit, numerical trouble)
+        /* (the search's friction, where it is not every joint's own) */
+        if (r.states != r.cone) s->start[s->nstarts - 1].search_mu = r.mu_cap;
+        /* An LP that failed in a restart (its limit, numerical trouble)
          * ends that restart alone, its note kept, as a state that could
          * not be drawn does: the restarts' lower friction met more such
-         * LPs, and W1 at mu = 20 ran 3 of its 10 */
-        if (k > 0 && stop != BL_LP_INTERRUPTED && stop != BL_LP_TIME_LIMIT) stop = BL_LP_OPTIMAL;
-        /* and in start 0, unless the cap is the user's (solve{ iterations
-         * }): the restarts and retries that follow an uncertified start
-         * 0 still run (a two-bay arcade at mu = inf: numerical trouble at
-         * LP 20 of start 0 ended the solve) */
-        if (k == 0 && (stop == BL_LP_FAILED || (stop == BL_LP_ITERATION_LIMIT && o->base.iterations == 0)))
+         * LPs, and W1 at mu = 20 ran 3 of its 10.  So in start 0, unless
+         * the cap is the user's (solve{ iterations }): the restarts and
+         * retries that follow an uncertified start 0 still run (a two-bay
+         * arcade at mu = inf: numerical trouble at LP 20 of start 0 ended
+         * the solve); where none follow, the run ends with that LP's
+         * status (below). */
+        bl_lp_status failed = stop;
+        if (k > 0 ? stop != BL_LP_INTERRUPTED && stop != BL_LP_TIME_LIMIT
+                  : stop == BL_LP_FAILED || (stop == BL_LP_ITERATION_LIMIT && o->base.iterations == 0))
             stop = BL_LP_OPTIMAL;
         if (k == 0) {
             first = ss;
@@ -1742,6 +1734,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             /* why the default restarts, for the user (r.restarts_why) */
             if (sliding && o->starts < 0 && starts > 0)
                 s->restarts_why = why ? why : probe == probe ? "probe" : "not certified";
+            if (starts == 0) stop = failed;
         } else if (retry && r.found) {
             /* the first retry to certify: the restarts start 0 would have
              * decided on its answer follow it (the running bond of 16 x 16
@@ -1853,6 +1846,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     }
     s->iterations += r.iterations;
     if (r.lp_fixed) s->lp = bl_lp_engine(r.lp_fixed);
+    s->lp_switched = r.switched;
     if (r.shown) fprintf(stderr, "\r%79s\r", "");
     path_free(&pj);
     run_free(&r);

@@ -22,11 +22,16 @@ typedef struct bl_seqlp_options {
                               BL_SEQLP_SEARCH_ROWS rows, 3D ones of at most
                               BL_SEQLP_SEARCH_COLUMNS3 columns, and where unlimited
                               friction gives the associative alpha or the
-                              rules of BL_SEQLP_MARGIN hold, else up to
-                              BL_SEQLP_RETRIES until one certifies (then
-                              BL_SEQLP_SEARCH more where those rules hold
-                              for it), on models of at most
-                              BL_SEQLP_RETRY_ROWS rows */
+                              rules of BL_SEQLP_MARGIN hold, else, on models
+                              within those sizes, BL_SEQLP_PROBE (the rest
+                              of the BL_SEQLP_SEARCH where they find a lower
+                              answer), or up to BL_SEQLP_RETRIES
+                              (BL_SEQLP_RETRIES_MEDIUM within those sizes)
+                              until one certifies (then the same rules for
+                              it), on models of at most BL_SEQLP_RETRY_ROWS
+                              rows; after BL_SEQLP_SEARCH restarts (not the
+                              small models' 20), BL_SEQLP_LOW_STARTS more at
+                              a lower friction */
     unsigned long long seed; /* of those random states */
     int nearest;           /* after this many failed certificates of a start,
                               each further one is followed by the nearest
@@ -131,9 +136,10 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
 
 /* After a default search of BL_SEQLP_SEARCH restarts (not the small
  * models' BL_SEQLP_SEARCH_SMALL, where they found nothing more on W1, W4,
- * W5 and a running bond of 8 x 8), BL_SEQLP_LOW_STARTS more whose search (stress state, fixed LPs) caps
- * every joint's friction at BL_SEQLP_LOW times the highest finite one;
- * the certificates hold each joint to its own.  Lower friction lets the
+ * W5 and a running bond of 8 x 8), BL_SEQLP_LOW_STARTS more whose search
+ * (stress state, fixed LPs) caps every finite friction at BL_SEQLP_LOW
+ * times the highest (rigid joints as in start 0); the certificates hold
+ * each joint to its own.  Lower friction lets the
  * search reach mechanisms that slide more, which can be solutions at the
  * model's own friction too: a façade 8 x 3 x 10 at mu = 0.7 certified
  * 0.23049 after 10 restarts and 0.15680 after these two; a façade

@@ -236,7 +236,8 @@ local vtk = dir .. "/blocklim_test.vtk"
 model { dim = 3, mu = 0.6 }
 box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
 box { size = { 0.5, 1, 1 } }
-solve {}:vtk(vtk)
+local last_3d = solve {}
+last_3d:vtk(vtk)
 f = io.open(vtk, "r")
 text = f and f:read("a") or ""
 if f then f:close() end
@@ -250,6 +251,22 @@ fx, fy, fz = tonumber(fx), tonumber(fy), tonumber(fz)
 T.ok(fx and math.abs(fx + 0.25) < 1e-9 and math.abs(fy) < 1e-9 and math.abs(fz - 0.5) < 1e-9,
      "vtk: the interface force balances the block's weight and its live load", last)
 T.raises(function() r:vtk(vtk) end, "vtk: a 2D result is refused", "vtk", "3D")
+-- ... and Tab does not offer it there (the metatable's __fields), but for
+-- 3D results, with an answer or without
+local function offers_vtk(res)
+  local fields = getmetatable(res).__fields
+  if not fields then return rawget(getmetatable(res), "vtk") ~= nil end
+  for _, k in ipairs(fields) do if k == "vtk" then return true end end
+  return false
+end
+model { mu = 0.6 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+block { vertices = { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }, support = true }
+load { live = "horizontal", direction = { 0, -1 } } -- more weight: no collapse, no mechanism
+local none2 = solve { flow = "associative" }
+T.ok(r.dim == 2 and none2.dim == 2 and not offers_vtk(r) and not offers_vtk(none2) and offers_vtk(last_3d),
+     "Tab offers r:vtk on 3D results only, with a mechanism or without",
+     ("%s %s %s"):format(tostring(offers_vtk(r)), tostring(offers_vtk(none2)), tostring(offers_vtk(last_3d))))
 -- a model name with a line break: the title stays the file's second line,
 -- "ASCII" its third, as the format requires
 model { dim = 3, mu = 0.6, name = "two\nlines" }

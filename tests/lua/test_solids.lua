@@ -709,6 +709,20 @@ do
        ("%.6f against %.6f (given), restarts at mu 0.3: %s"):format(d.alpha, given.alpha, tostring(halved)))
 end
 
+-- W4 one block thick in 3D, a medium model: one start certifies 0.30698,
+-- within 10 % of the associative alpha, so no rule searches; two restarts
+-- probe it, one certifies lower, and the search that follows reaches the
+-- 2D wall's published 0.26374 (+- 0.00005; the seed, Ferris & Tin-Loi).
+do
+  model { dim = 3, mu = 0.65 }
+  wall { courses = walls.W4, unit = { 0.4, 0.175 }, depth = 0.2 }
+  local r = solve { progress = false }
+  T.ok(r.certified and r.verified and math.abs(r.alpha - 0.26374) <= 0.00005 and r.restarts_why == "probe found"
+       and r.dim == 3 and tostring(r):find("one certified more", 1, true),
+       "W4 one block thick: the probe finds a lower answer, and the search the published 0.26374",
+       ("%.6f, %s"):format(r.alpha or 0 / 0, tostring(r.restarts_why)))
+end
+
 -- facade{}: n + 2m blocks in the courses where the facade runs through,
 -- 2(m + 1) + n - 1 where the returns do
 model { dim = 3, mu = 0.65 }
