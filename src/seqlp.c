@@ -141,13 +141,18 @@ static int has_rigid(const bl_model *m)
     return 0;
 }
 
-/* Whether the model is of the size up to which the default searches
- * where one start's answer leaves doubt (BL_SEQLP_MARGIN_ROWS,
+/* Whether the model's LPs have at most rows rows in 2D, cols3 columns in
+ * 3D: the small models (BL_SEQLP_SEARCH_ROWS, BL_SEQLP_SEARCH_COLUMNS3),
+ * and the medium ones up to which the default searches where one start's
+ * answer leaves doubt (medium: BL_SEQLP_MARGIN_ROWS,
  * BL_SEQLP_MARGIN_COLUMNS3). */
+static int within(const run *r, const bl_model *mc, int rows, int cols3)
+{
+    return (mc->dim == 2 && r->fixed->nrows <= rows) || (mc->dim == 3 && r->fixed->ncols <= cols3);
+}
 static int medium(const run *r, const bl_model *mc)
 {
-    return (mc->dim == 2 && r->fixed->nrows <= BL_SEQLP_MARGIN_ROWS) ||
-           (mc->dim == 3 && r->fixed->ncols <= BL_SEQLP_MARGIN_COLUMNS3);
+    return within(r, mc, BL_SEQLP_MARGIN_ROWS, BL_SEQLP_MARGIN_COLUMNS3);
 }
 
 /* Whether the default runs BL_SEQLP_SEARCH restarts after the first start
@@ -1596,6 +1601,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     double probe = NAN; /* the answer two restarts probe, or NaN (below) */
     start_state first = {0}; /* where start 0 stopped */
     int low_from = 0; /* the first of the restarts at a lower friction, or 0 */
+    int small = 0;    /* a small model, with BL_SEQLP_SEARCH_SMALL restarts (below) */
     for (int k = 0; k == 0 || stop == BL_LP_OPTIMAL; k++) {
         if (k > starts) {
             /* The restarts planned have run (or been skipped).  After a
@@ -1609,8 +1615,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                 s->restarts_why = "probe found";
             }
             probe = NAN;
-            if (k > starts && !low_from && sliding && o->starts < 0 && starts >= BL_SEQLP_SEARCH &&
-                s->restarts_why && strcmp(s->restarts_why, "small") != 0 && bl_model_finite_friction(mc)) {
+            if (k > starts && !low_from && sliding && o->starts < 0 && starts >= BL_SEQLP_SEARCH && !small &&
+                bl_model_finite_friction(mc)) {
                 low_from = k;
                 starts = k + BL_SEQLP_LOW_STARTS - 1;
             }
@@ -1716,8 +1722,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
              * one start was up to 2.9 times the lowest answer found
              * (doc/seqlp.md 18).  Where start 0 did not certify, the
              * first retry to certify decides so (search_after). */
-            int small = (mc->dim == 2 && r.fixed->nrows <= BL_SEQLP_SEARCH_ROWS) ||
-                        (mc->dim == 3 && r.fixed->ncols <= BL_SEQLP_SEARCH_COLUMNS3);
+            small = within(&r, mc, BL_SEQLP_SEARCH_ROWS, BL_SEQLP_SEARCH_COLUMNS3);
             const char *why = small ? "small" : s->assoc_is_solution ? "solution" : search_after(&r, s, mc, o);
             retry = sliding && o->starts < 0 && !why && !r.found && r.fixed->nrows <= BL_SEQLP_RETRY_ROWS;
             /* where none of these holds on a model of that size, two
