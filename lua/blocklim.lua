@@ -28,16 +28,40 @@ return function(core)
     end
     return report.wrap(r)
   end
-  -- stats() prints as one line at the prompt.
+  -- stats() prints as one line at the prompt, with the sliver blocks:
+  -- free blocks below SLIVER of the free blocks' mean area (3D volume), a
+  -- clipped drawing's leftovers, which the LPs can stall on (a tester's
+  -- spandrel: a block 2.5e-6 of its neighbours' area).
+  local SLIVER = 1e-3
   local Stats = { __tostring = function(st)
     local function n(k, word) return ("%d %s%s"):format(st[k], word, report.plural(st[k])) end
-    return ("%s, %s, %s (%dD); size %.4g, tol %.3g, gap %.3g"):format(n("blocks", "free block"),
+    local line = ("%s, %s, %s (%dD); size %.4g, tol %.3g, gap %.3g"):format(n("blocks", "free block"),
       n("supports", "support"), n("interfaces", "interface"), st.dim, st.size, st.tol, st.gap)
+    if st.slivers then
+      line = line .. ("; sliver block%s (below %g of the mean %s): %s%s"):format(report.plural(#st.slivers), SLIVER,
+        st.dim == 3 and "volume" or "area", table.concat(st.slivers, ", ", 1, math.min(#st.slivers, 8)),
+        #st.slivers > 8 and (" and %d more"):format(#st.slivers - 8) or "")
+    end
+    return line
   end }
   local stats = methods.stats
   function methods.stats(m)
     with_colon(m, "stats", "()")
-    return setmetatable(stats(m), Stats)
+    local st, size, total = stats(m), {}, 0
+    for i = 1, st.blocks + st.supports do
+      local b = m:block_info(i)
+      if not b.support then
+        size[#size + 1] = { i, b.volume or b.area }
+        total = total + size[#size][2]
+      end
+    end
+    for _, e in ipairs(size) do
+      if e[2] < SLIVER * total / #size then
+        st.slivers = st.slivers or {}
+        table.insert(st.slivers, e[1])
+      end
+    end
+    return setmetatable(st, Stats)
   end
   -- load{ dead = { over = ..., q = ... } } (and live): a distributed load,
   -- given to the core as the point loads it amounts to, once every part of

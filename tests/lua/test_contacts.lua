@@ -149,4 +149,16 @@ block { vertices = { { 5, -1 }, { 6, -1 }, { 6, 0 }, { 5, 0 } }, support = true 
 block { vertices = { { 5, 0 }, { 6, 0 }, { 6, 1 }, { 5, 1 } } }
 T.raises(function() contacts {} end, "a pair in the air beside a supported block: the pair named",
          "contacts: free blocks 1, 2 rest on no support, directly or through other blocks")
+-- stats() names the sliver blocks, below 1e-3 of the free blocks' mean
+-- area: a 1 x 1 block beside a 0.0001 x 0.5 one (5e-5, the mean 0.500025)
+model { mu = 0.6 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } }
+block { vertices = { { 1, 0 }, { 1.0001, 0 }, { 1.0001, 0.5 }, { 1, 0.5 } } }
+block { vertices = { { -1, -1 }, { 3, -1 }, { 3, 0 }, { -1, 0 } }, support = true }
+local st = stats()
+T.ok(st.slivers and #st.slivers == 1 and st.slivers[1] == 2 and tostring(st):find("sliver block (below 0.001 of the mean area): 2", 1, true),
+     "stats(): a block 1e-4 of the mean area named a sliver", tostring(st))
+model { mu = 0.6 }
+wall { courses = { { 1, 1 }, { .5, 1, .5 } }, unit = { 0.4, 0.175 } }
+T.ok(stats().slivers == nil and not tostring(stats()):find("sliver", 1, true), "stats(): a wall's half blocks are no slivers")
 T.done()
