@@ -74,11 +74,14 @@ return function(core)
     for _, k in ipairs { "dead", "live" } do
       local e = sp[k]
       if e then
-        local total = e.blocks + e.supports
+        local total = e.blocks + e.supports + (e.nothing or 0)
         local s = ("%s load: %.6g in all, %.6g on %d free block%s"):format(k, total, e.blocks, e.count,
           report.plural(e.count))
         if e.supports > 0 then
           s = s .. (", %.6g (%.3g %%) on supports, which carry it"):format(e.supports, 100 * e.supports / total)
+        end
+        if e.nothing then
+          s = s .. (", %.6g (%.3g %%) over nothing, which falls through"):format(e.nothing, 100 * e.nothing / total)
         end
         lines[#lines + 1] = s
       end
@@ -92,9 +95,10 @@ return function(core)
     local points, rest, spread = {}, {}, nil
     for k, v in pairs(t) do
       if (k == "dead" or k == "live") and type(v) == "table" and (v.over ~= nil or v.q ~= nil) then
-        local loads, blocks, supports = distributed.point_loads(m, core.blocks(m), v, "load " .. k, core.load_ratio)
+        local loads, blocks, supports, nothing =
+          distributed.point_loads(m, core.blocks(m), v, "load " .. k, core.load_ratio)
         spread = spread or setmetatable({}, Spread)
-        spread[k] = { blocks = blocks, supports = supports, count = #loads }
+        spread[k] = { blocks = blocks, supports = supports, nothing = nothing, count = #loads }
         for _, p in ipairs(loads) do points[#points + 1] = { [k] = p } end
       else
         rest[k] = v

@@ -436,7 +436,8 @@ end
 -- (blocks 1..n), each at most `ratio` times its block's weight, checked
 -- whole before the caller applies any (so that applying them cannot
 -- fail), then the totals on free blocks and on supports (which carry
--- theirs: it loads nothing); errors start with fn ("load dead").
+-- theirs: it loads nothing), and for a uniform q what lands on nothing
+-- (nil where nothing does); errors start with fn ("load dead").
 function M.point_loads(m, n, t, fn, ratio)
   local function fail(msg) error(fn .. ": " .. msg, 0) end
   for k in pairs(t) do
@@ -455,12 +456,16 @@ function M.point_loads(m, n, t, fn, ratio)
   local supported, loads
   if m:dim() == 3 then supported, loads = point_loads_3d(m, n, t, fail, ratio)
   else supported, loads = point_loads_2d(m, n, t, fail, ratio) end
-  local carried = 0
+  local carried, o = 0, t.over
   for _, l in ipairs(loads) do carried = carried - l.force[#l.force] end
+  -- a uniform q: what lands on nothing, and falls through
+  local asked = type(t.q) == "number" and t.q * (m:dim() == 3 and (o[2][1] - o[1][1]) * (o[2][2] - o[1][2])
+                                                  or o[2] - o[1]) or nil
   if t.weight then -- each resultant, straight down, as the weight it is
     for _, l in ipairs(loads) do l.weight, l.force = -l.force[#l.force], nil end
   end
-  return loads, carried, supported
+  local lost = asked and asked - carried - supported
+  return loads, carried, supported, lost and lost > 1e-9 * asked and lost or nil
 end
 
 return M

@@ -317,6 +317,15 @@ do
        and tostring(went) == "dead load: 32 in all, 1 on 1 free block, 31 (96.9 %) on supports, which carry it",
        "3D: load{} returns where q = 2 over 4 x 4 went: q b d = 1 on the box, 31 on the ground (to 1e-12)",
        tostring(went))
+  -- 2D, over a pier 0.5 wide and past it: q = 2 over {-1, 0.5}, 1 on the
+  -- pier, 2 over nothing (the ground 0 .. 0.5 wide under the pier only)
+  model { mu = 0.6 }
+  block { vertices = { { 0, 0 }, { 0.5, 0 }, { 0.5, 1.5 }, { 0, 1.5 } } }
+  block { vertices = { { 0, -0.3 }, { 0.5, -0.3 }, { 0.5, 0 }, { 0, 0 } }, support = true }
+  local past = load { dead = { over = { -1, 0.5 }, q = 2 } }
+  T.ok(math.abs(past.dead.blocks - 1) <= 1e-12 and math.abs(past.dead.nothing - 2) <= 1e-12 and past.dead.supports == 0,
+       "load{} returns what lands on nothing: q = 2 over 1.5, 1 on a pier 0.5 wide, 2 falling through (to 1e-12)",
+       tostring(past))
   pier()
   load { dead = { over = { { -2, -2 }, { 2, 2 } }, q = function(x) return k * math.max(0, x + b / 2) end } }
   local Q = k * d * b ^ 2 / 2
