@@ -12,7 +12,7 @@ function report.show(v)
 end
 local plural = report.plural
 report.Result = Result
-local Result2D -- Result without vtk, made once Result is complete (report.wrap)
+local Result2D -- 2D answers: Result, but Tab (its __fields) leaves out vtk (made in report.wrap)
 
 Result.__index = Result
 local Interface = {}
