@@ -45,9 +45,9 @@ return function(core)
     return line
   end }
   local stats = methods.stats
-  function methods.stats(m)
+  function methods.stats(m, ...)
     with_colon(m, "stats", "()")
-    local st, size, total = stats(m), {}, 0
+    local st, size, total = stats(m, ...), {}, 0
     for i = 1, st.blocks + st.supports do
       local b = m:block_info(i)
       if not b.support then
@@ -113,7 +113,13 @@ return function(core)
   report.vtk = core.vtk
 
   -- The latest result, kept also when Ctrl-C stopped the solve.
-  function M.last()
+  -- a command of no arguments given some (undo(5) undid one command)
+  local function none(name, n, what)
+    if n > 0 then error(("%s: takes no arguments, got %d%s"):format(name, n, what or ""), 3) end
+  end
+
+  function M.last(...)
+    none("last", select("#", ...))
     local r = core.last()
     return r and report.wrap(r)
   end
@@ -124,7 +130,8 @@ return function(core)
     return current
   end
 
-  function M.current()
+  function M.current(...)
+    none("current", select("#", ...))
     return current
   end
 
@@ -146,7 +153,10 @@ return function(core)
   end
 
   for _, name in ipairs { "block", "contacts", "interface", "load", "solve", "stats" } do
-    M[name] = function(t)
+    M[name] = function(t, ...)
+      if select("#", ...) > 0 then
+        error(("%s: takes one table of fields, got %d arguments"):format(name, 1 + select("#", ...)), 2)
+      end
       return methods[name](need(name), t)
     end
   end
@@ -163,8 +173,9 @@ return function(core)
   -- m:undo() and undo(): model m as it was before the last command that
   -- added blocks to it (block, wall, arch, box, import, ...), those blocks
   -- gone with the loads and joint settings that name them; returns m.
-  function methods.undo(m)
+  function methods.undo(m, ...)
     with_colon(m, "undo", "()")
+    none("undo", select("#", ...), " (it takes back the last command that added blocks: call it again for more)")
     local stack, n = made[m] or {}, core.blocks(m)
     -- (a wall's own blocks were pushed one by one before the wall)
     while #stack > 0 and stack[#stack] >= n do table.remove(stack) end
@@ -175,7 +186,10 @@ return function(core)
     core.truncate(m, table.remove(stack))
     return m
   end
-  function M.undo() return methods.undo(need("undo")) end
+  function M.undo(...)
+    none("undo", select("#", ...), " (it takes back the last command that added blocks: call it again for more)")
+    return methods.undo(need("undo"))
+  end
 
   -- load{...} is the DSL's; load("chunk") and load(fn) stay Lua's own.
   local lua_load, dsl_load = load, M.load

@@ -16,6 +16,8 @@ local Result2D -- 2D answers: Result, but Tab (its __fields) leaves out vtk (mad
 
 Result.__index = Result
 local Interface = {}
+-- the numbers of each mechanism entry (report.wrap), by the entry
+local VELOCITY = setmetatable({}, { __mode = "k" })
 
 local function g(x)
   return ("%.3g"):format(x)
@@ -443,6 +445,7 @@ function Result.json(r, file)
   local function plain(v, depth)
     if type(v) == "function" or type(v) == "userdata" or type(v) == "thread" then return nil end
     if type(v) ~= "table" then return v end
+    v = VELOCITY[v] or v -- (a mechanism entry's numbers)
     if depth > 20 then error("json: the result nests more than 20 tables deep", 3) end
     local out = {}
     for k, x in next, v do
@@ -452,7 +455,9 @@ function Result.json(r, file)
   end
   local text = json.encode(plain(r, 0))
   local f, why = io.open(file, "w")
-  if not f then error("json: cannot write " .. tostring(why), 2) end
+  if not f then -- (io.open's reason begins with the file's name)
+    error(("json: cannot write '%s': %s"):format(file, (tostring(why):gsub("^" .. file:gsub("%p", "%%%0") .. ": ", ""))), 2)
+  end
   f:write(text, "\n")
   f:close()
 end
@@ -631,14 +636,27 @@ function report.wrap(r)
     end
   end
   local three = r.mechanism and r.mechanism[1] and #r.mechanism[1] == 6
-  local shown = { __tostring = function(u) return velocity_text(u, vmax, wmax) end,
-                  __index = velocity_field,
+  -- each entry an empty table that reads its block's velocity, so that no
+  -- assignment, to a component or a new name, changes the answer (r:json
+  -- writes it)
+  local shown = { __tostring = function(p) return velocity_text(VELOCITY[p], vmax, wmax) end,
+                  __index = function(p, k)
+                    local u = VELOCITY[p]
+                    if math.type(k) == "integer" then return u[k] end
+                    return velocity_field(u, k)
+                  end,
+                  __len = function(p) return #VELOCITY[p] end,
+                  __pairs = function(p) return next, VELOCITY[p], nil end,
                   __newindex = function()
                     error("a mechanism entry is read-only: copy it to change it ({ table.unpack(u) })", 2)
                   end, -- and for Tab (src/main.c):
                   __fields = three and { "vx", "vy", "vz", "wx", "wy", "wz", "v", "omega" }
                                    or { "vx", "vy", "omega" } }
-  for _, u in ipairs(r.mechanism or {}) do setmetatable(u, shown) end
+  for i, u in ipairs(r.mechanism or {}) do
+    local p = setmetatable({}, shown)
+    VELOCITY[p] = u
+    r.mechanism[i] = p
+  end
   -- a 2D answer: Tab does not offer r:vtk, which is for 3D (and says so)
   if not Result2D then
     Result2D = { __tostring = Result.__tostring, __fields = {} }

@@ -47,6 +47,16 @@ static int fail(lua_State *L, const char *fmt, ...)
     return lua_error(L);
 }
 
+/* An error of the core met in command cmd: its message, which starts with
+ * the command's name or else with the step's (the detection's
+ * "contacts: ..."), after the command's. */
+static int fail_in(lua_State *L, const char *cmd, const char *msg)
+{
+    size_t n = strlen(cmd);
+    if (strncmp(msg, cmd, n) == 0 && msg[n] == ':') return fail(L, "%s", msg);
+    return fail(L, "%s: %s", cmd, msg);
+}
+
 /* An omitted table argument at idx (the last one) reads as {}. */
 static void opt_table(lua_State *L, int idx)
 {
@@ -162,8 +172,15 @@ static bl_vec2 to_point(lua_State *L, const char *fn, const char *what)
     double c[2];
     for (int i = 0; i < 2; i++) {
         lua_geti(L, -1, i + 1);
-        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-            fail(L, "%s: %s must be a point {x, y} of two finite numbers", fn, what);
+        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1))) {
+            if (lua_isnil(L, -1))
+                fail(L, "%s: %s must be a point {x, y} of two numbers, got %d", fn, what,
+                     (int)lua_rawlen(L, -2));
+            int number = lua_type(L, -1) == LUA_TNUMBER;
+            const char *got = number ? luaL_tolstring(L, -1, NULL) : luaL_typename(L, -1);
+            fail(L, "%s: %s must be a point {x, y} of two finite numbers, its %s is %s%s", fn, what,
+                 i ? "y" : "x", number ? "" : "a ", got);
+        }
         c[i] = lua_tonumber(L, -1);
         lua_pop(L, 1);
     }
@@ -229,9 +246,10 @@ static int point_field(lua_State *L, int idx, const char *fn, const char *f, bl_
     return 1;
 }
 
-/* Options with fixed choices: returns the index of the choice. */
-static int choice_field(lua_State *L, int idx, const char *fn, const char *f,
-                        const char *const *choices, int def)
+/* Options with fixed choices: returns the index of the choice; also, where
+ * not NULL, what else the field may be, for the message. */
+static int choice_field_or(lua_State *L, int idx, const char *fn, const char *f,
+                           const char *const *choices, int def, const char *also)
 {
     if (!field(L, idx, f)) return def;
     const char *s = lua_tostring(L, -1);
@@ -245,8 +263,23 @@ static int choice_field(lua_State *L, int idx, const char *fn, const char *f,
         size_t len = strlen(list);
         snprintf(list + len, sizeof list - len, "%s\"%s\"", i ? ", " : "", choices[i]);
     }
-    return fail(L, "%s: field '%s' must be one of %s, got %s", fn, f, list,
-                luaL_tolstring(L, -1, NULL));
+    return fail(L, "%s: field '%s' must be one of %s%s%s, got %s", fn, f, list, also ? ", or " : "",
+                also ? also : "", luaL_tolstring(L, -1, NULL));
+}
+static int choice_field(lua_State *L, int idx, const char *fn, const char *f,
+                        const char *const *choices, int def)
+{
+    return choice_field_or(L, idx, fn, f, choices, def, NULL);
+}
+
+/* load{}'s dead and live given by name: what else they may be */
+static int load_choice(lua_State *L, int live, const char *const *choices)
+{
+    return choice_field_or(L, 2, "load", live ? "live" : "dead", choices, 0,
+                           live ? "a table: a point load { block, at, force } or a distributed load "
+                                  "{ over, q }"
+                                : "a table: a point load { block, at, force }, a carried weight "
+                                  "{ block, at, weight } or a distributed load { over, q }");
 }
 
 static bl_model *check_model(lua_State *L, int idx)
@@ -652,7 +685,7 @@ static int model_interface(lua_State *L)
     bl_error err;
     if (bl_joint_check(m, &s, &err)) return fail(L, "%s", err.msg);
     if (!s.npoints) { /* an override needs an interface to act on: check now */
-        if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
+        if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail_in(L, "interface", err.msg);
         int found = 0;
         for (int k = 0; k < m->ninterfaces && !found; k++) {
             const bl_interface *in = &m->interfaces[k];
@@ -729,7 +762,7 @@ static int load_3d(lua_State *L, bl_model *m)
         if (!field(L, 2, f)) continue;
         if (!lua_istable(L, -1)) {
             lua_pop(L, 1);
-            kinds[k] = choice_field(L, 2, "load", f, k ? live_choices : dead_choices, 0);
+            kinds[k] = load_choice(L, k, k ? live_choices : dead_choices);
             continue;
         }
         char fn[32];
@@ -835,7 +868,7 @@ static int model_load(lua_State *L)
             lua_pop(L, 1);
         } else {
             lua_pop(L, 1);
-            kinds[k] = choice_field(L, 2, "load", f, k ? live_choices : dead_choices, 0);
+            kinds[k] = load_choice(L, k, k ? live_choices : dead_choices);
         }
     }
     bl_vec2 dir = m->live_dir;
@@ -858,10 +891,12 @@ static int model_load(lua_State *L)
 static int model_stats(lua_State *L)
 {
     bl_model *m = check_model(L, 1);
+    if (lua_gettop(L) > 1 && !(lua_gettop(L) == 2 && lua_isnil(L, 2))) /* (stats() passes nil) */
+        return fail(L, "stats: takes no arguments, got %d", lua_gettop(L) - 1);
     bl_error err;
     /* a model without blocks has nothing to detect: its counts are 0 */
     if (m->nblocks > 0 && !m->contacts_valid && bl_contact_detect(m, &err))
-        return fail(L, "%s", err.msg);
+        return fail_in(L, "stats", err.msg);
     int nfree = bl_model_free_blocks(m);
     double tol, gap;
     bl_contact_tolerances(m, &tol, &gap);
@@ -906,7 +941,7 @@ static int model_interface_info(lua_State *L)
 {
     bl_model *m = check_model(L, 1);
     bl_error err;
-    if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
+    if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail_in(L, "interface_info", err.msg);
     int whole = 0;
     lua_Integer k = lua_type(L, 2) == LUA_TNUMBER ? lua_tointegerx(L, 2, &whole) : 0;
     if (!whole)
@@ -1391,7 +1426,7 @@ static int solve_or_check(lua_State *L, int check)
          * has finite friction (its rigid joints, as the direct solve's,
          * cannot slide even where they open: doc/theory.md 6) */
         bl_error err;
-        if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail(L, "%s", err.msg);
+        if (!m->contacts_valid && bl_contact_detect(m, &err)) return fail_in(L, "solve", err.msg);
         if (!bl_model_finite_friction(m)) flow = 0;
     }
     bl_mpec_options mo;
@@ -1539,7 +1574,7 @@ static int solve_or_check(lua_State *L, int check)
         *dead = NULL;
     }
     sigaction(SIGINT, &old, NULL);
-    if (rc) return fail(L, "%s", err.msg);
+    if (rc) return fail_in(L, "solve", err.msg);
     const bl_solution *s = *box;
     if (s->status == BL_INTERRUPTED && !s->interrupted) {
         /* nothing to keep: last() no longer returns an earlier solve */

@@ -610,6 +610,14 @@ do
        and math.abs(u.vy + u.omega * b / 2) <= 1e-9 * math.abs(u.vx),
        "2D block rocking about its toe: u.vx = -omega h/2, u.vy = -omega b/2 by name (to 1e-9)",
        tostring(u))
+  -- the entry is read-only, by its index as by its names, and keeps the
+  -- answer (a tester's u[1] = 7 was taken, and r:json wrote it)
+  local vx = u[1]
+  T.raises(function() u[1] = 7 end, "a mechanism entry refuses a component assigned", "read-only")
+  T.raises(function() u.omega = 7 end, "a mechanism entry refuses a name assigned", "read-only")
+  local copy = { table.unpack(u) }
+  T.ok(u[1] == vx and u.vx == vx and #u == 3 and #copy == 3 and copy[1] == vx and copy[3] == u.omega,
+       "a mechanism entry after both: its numbers as before; table.unpack copies all 3", tostring(u))
   model { dim = 3, mu = 0.8 }
   box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
   local shaft = box { size = { b, 1, h } }
