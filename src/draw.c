@@ -345,6 +345,10 @@ static void extent(pic *P, double box[4])
             load_point(P, &m->loads[l], pass, &at, &dir);
             grow(box, at);
             grow(box, bl_v2_sub(at, bl_v2_scale(dir, room)));
+            const bl_point_load *pl = &m->loads[l];
+            if (pl->moment != 0.0 || bl_v3_norm(pl->moment3) > 0.0) /* its couple, around it */
+                for (int c = 0; c < 4; c++)
+                    grow(box, bl_v2_add(at, bl_v2((c & 1 ? 1.0 : -1.0) * room, (c & 2 ? 1.0 : -1.0) * room)));
         }
 }
 
@@ -790,10 +794,69 @@ static void draw3(cairo_t *cr, const pic *P)
     free(hidden);
 }
 
+/* An arrow's head: a triangle with its tip at tip, along the unit d (canvas). */
+static void arrow_head(cairo_t *cr, bl_vec2 tip, bl_vec2 d, double head)
+{
+    bl_vec2 base = bl_v2_sub(tip, bl_v2_scale(d, 2.0 * head)), side = bl_v2(-d.y * head, d.x * head);
+    cairo_new_path(cr);
+    cairo_move_to(cr, tip.x, tip.y);
+    cairo_line_to(cr, base.x + side.x, base.y + side.y);
+    cairo_line_to(cr, base.x - side.x, base.y - side.y);
+    cairo_close_path(cr);
+    cairo_fill(cr);
+}
+
+/* A couple at the canvas point at, as its sense is seen: three quarters of
+ * a circle of radius r around it, ending in a head (anticlockwise as seen
+ * where ccw; on the canvas y runs down, so that is decreasing angle). */
+static void couple_arc(cairo_t *cr, bl_vec2 at, double r, double head, int ccw)
+{
+    double a0 = 0.25 * M_PI, a1 = a0 + (ccw ? -1.5 : 1.5) * M_PI;
+    cairo_new_path(cr);
+    if (ccw)
+        cairo_arc_negative(cr, at.x, at.y, r, a0, a1);
+    else
+        cairo_arc(cr, at.x, at.y, r, a0, a1);
+    cairo_set_line_width(cr, 0.5 * head);
+    cairo_stroke(cr);
+    bl_vec2 end = bl_v2(at.x + r * cos(a1), at.y + r * sin(a1));
+    bl_vec2 along = ccw ? bl_v2(sin(a1), -cos(a1)) : bl_v2(-sin(a1), cos(a1));
+    arrow_head(cr, bl_v2_add(end, bl_v2_scale(along, head)), along, head);
+}
+
+/* A couple of point load pl, drawn at where it acts (p, model units, on
+ * its block as moved): in 2D, and in 3D where its moment points within
+ * 60 degrees of the line of sight, as an arc with the sense seen
+ * (couple_arc); else as its moment's vector, an arrow with two heads. */
+static void couple(cairo_t *cr, const pic *P, const bl_point_load *pl, bl_vec2 p, double len, double head)
+{
+    bl_vec2 at = dev(P, p);
+    double towards = pl->moment; /* 2D: anticlockwise, towards the viewer */
+    bl_vec2 in = bl_v2(0.0, 0.0);
+    if (P->dim == 3) {
+        towards = bl_v3_dot(pl->moment3, P->eye);
+        in = bl_v2(bl_v3_dot(pl->moment3, P->right), -bl_v3_dot(pl->moment3, P->up));
+    }
+    double size = hypot(towards, bl_v2_norm(in));
+    if (size == 0.0) return;
+    if (bl_v2_norm(in) < 0.5 * size) {
+        couple_arc(cr, at, 0.4 * len, head, towards > 0.0);
+        return;
+    }
+    bl_vec2 d = bl_v2_scale(in, 1.0 / bl_v2_norm(in)), tail = bl_v2_sub(at, bl_v2_scale(d, len));
+    cairo_new_path(cr);
+    cairo_move_to(cr, tail.x, tail.y);
+    cairo_line_to(cr, at.x, at.y);
+    cairo_set_line_width(cr, 0.5 * head);
+    cairo_stroke(cr);
+    arrow_head(cr, at, d, head);
+    arrow_head(cr, bl_v2_sub(at, bl_v2_scale(d, 2.0 * head)), d, head);
+}
+
 /* Every point load as an arrow ending where it acts (on its block as
  * moved), along its force (a carried weight along gravity), of one length
- * (ARROW of the canvas's width, not to scale): dead grey, live purple.  A
- * couple alone, or a force along the line of sight, has none. */
+ * (ARROW of the canvas's width, not to scale), and its couple (couple):
+ * dead grey, live purple.  A force along the line of sight has none. */
 static void load_arrows(cairo_t *cr, const pic *P)
 {
     const bl_model *m = P->m;
@@ -802,6 +865,8 @@ static void load_arrows(cairo_t *cr, const pic *P)
         const bl_point_load *pl = &m->loads[l];
         bl_vec2 p, d;
         load_point(P, pl, 1, &p, &d);
+        color(cr, pl->live ? LIVE_LOAD : DEAD_LOAD);
+        couple(cr, P, pl, p, len, head);
         if (d.x == 0.0 && d.y == 0.0) continue;
         bl_vec2 at = dev(P, p);
         d = bl_v2(d.x, -d.y); /* the canvas's y runs down */
@@ -813,18 +878,12 @@ static void load_arrows(cairo_t *cr, const pic *P)
         if (d.y < 0.0) fit = fmin(fit, (at.y - P->h) / d.y);
         fit = fmax(fit, 3.0 * head);
         bl_vec2 tail = bl_v2_sub(at, bl_v2_scale(d, fit)), base = bl_v2_sub(at, bl_v2_scale(d, 2.0 * head));
-        bl_vec2 side = bl_v2(-d.y * head, d.x * head);
-        color(cr, pl->live ? LIVE_LOAD : DEAD_LOAD);
         cairo_new_path(cr);
         cairo_move_to(cr, tail.x, tail.y);
         cairo_line_to(cr, base.x, base.y);
         cairo_set_line_width(cr, 0.5 * head);
         cairo_stroke(cr);
-        cairo_move_to(cr, at.x, at.y);
-        cairo_line_to(cr, base.x + side.x, base.y + side.y);
-        cairo_line_to(cr, base.x - side.x, base.y - side.y);
-        cairo_close_path(cr);
-        cairo_fill(cr);
+        arrow_head(cr, at, d, head);
     }
 }
 

@@ -124,6 +124,43 @@ for _, case in ipairs { { 1.0, "rocking" }, { 0.2, "sliding" } } do
 end
 os.remove(svg)
 
+-- Couples are drawn (a tester's were not): a live couple M alone on a
+-- block b x h of weight W tips it about its toe at alpha = W b / (2 M); the
+-- picture has one purple stroke and one purple head for it in 2D (three
+-- quarters of a circle), and in 3D, for a couple about y on a box, the
+-- same seen from the front (along y), and seen from the top the moment's
+-- vector, one stroke with two heads.
+local PURPLE = "50%,12%,50%"
+local function fills(file, colour)
+  local n = 0
+  for _ in contents(file):gmatch(("fill:rgb(" .. colour .. ")"):gsub("%p", "%%%0")) do n = n + 1 end
+  return n
+end
+model { mu = 0.8, density = 10 }
+block { vertices = { { 0, 0 }, { 1, 0 }, { 1, 2 }, { 0, 2 } } }
+block { vertices = { { -1, -1 }, { 3, -1 }, { 3, 0 }, { -1, 0 } }, support = true }
+load { live = "none" }
+load { live = { block = 1, moment = 2 } }
+local rc = solve {}
+T.near(rc.alpha, 20 * 1 / (2 * 2), 1e-9, "a live couple alone tips a block at W b / (2 M) = 5")
+rc:svg(svg)
+T.ok(strokes(svg, PURPLE) == 1 and fills(svg, PURPLE) == 1,
+     ("2D couple drawn: one purple arc, one head (%d strokes, %d fills)"):format(strokes(svg, PURPLE), fills(svg, PURPLE)))
+model { dim = 3, mu = 0.8, density = 10 }
+box { size = { 3, 3, 0.5 }, at = { 0, 0, -0.5 }, support = true }
+local shaft = box { size = { 1, 1, 2 } }
+load { live = "none" }
+load { live = { block = shaft, moment = { 0, 2, 0 } } }
+rc = solve {}
+T.near(rc.alpha, 20 * 1 / (2 * 2), 1e-9, "3D: a live couple about y alone tips a box at W b / (2 M) = 5")
+rc:svg(svg, { view = "front" })
+T.ok(strokes(svg, PURPLE) == 1 and fills(svg, PURPLE) == 1,
+     ("3D couple about y seen from the front, along it: an arc, one head (%d strokes, %d fills)"):format(strokes(svg, PURPLE), fills(svg, PURPLE)))
+rc:svg(svg, { view = "top" })
+T.ok(strokes(svg, PURPLE) == 1 and fills(svg, PURPLE) == 2,
+     ("3D couple about y seen from the top: an arrow with two heads (%d strokes, %d fills)"):format(strokes(svg, PURPLE), fills(svg, PURPLE)))
+os.remove(svg)
+
 -- The hinges' dots: as wide as the legend's on W4, and smaller on a wall of
 -- 1,620 blocks, where a course is drawn at most 0.175 m x 920 px / 16 m =
 -- 10.1 px high, the legend's dot 10 px wide: there a dot must leave at least
