@@ -150,17 +150,26 @@ function Result.__tostring(r)
       if st.continues then went_on = st end
     end
     local paths = #r.starts - (went_on and 1 or 0)
+    -- how many different answers the starts certified (to 1e-6), as the
+    -- default counts them for "varied" (src/seqlp.c)
+    local answers = {}
+    for _, st in ipairs(r.starts) do
+      local seen = not st.alpha
+      for _, a in ipairs(answers) do seen = seen or math.abs(a - st.alpha) <= 1e-6 * math.abs(st.alpha) end
+      if not seen then answers[#answers + 1] = st.alpha end
+    end
+    local different = #answers > 1 and (", %d different answers"):format(#answers) or ""
     if r.none_dilates then -- said above
     elseif r.assoc_is_solution then
       say("  (with unlimited friction the associative alpha is the same: that answer is itself a")
       if paths > 1 then
-        say("  non-associative solution; %d restarts looked for lower ones)", paths - 1)
+        say("  non-associative solution; %d restarts looked for lower ones%s)", paths - 1, different)
       else
         say("  non-associative solution; starts = K looks for lower ones)")
       end
     elseif paths > 1 then
-      say("  (%d starts, each another path to a solution, %d certified%s)", paths, certified,
-          r.certified and "; alpha is the lowest" or "")
+      say("  (%d starts, each another path to a solution: %d certified%s%s)", paths, certified,
+          #answers > 1 and (", %d answers"):format(#answers) or "", r.certified and "; alpha is the lowest" or "")
       -- the rules apply to the first start to certify: start 1, or a
       -- retry where start 1 did not
       local why, k = r.restarts_why, 1
@@ -187,11 +196,15 @@ function Result.__tostring(r)
     elseif r.certified then
       say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")
     end
+    if r.restarts_why == "varied" then -- (BL_SEQLP_VARIED, BL_SEQLP_SEARCH_VARIED in src/seqlp.h)
+      say("  (the first 20 restarts on a model this small certified 4 or more different answers, and")
+      say("  40 more followed; where so many differ, lower ones may remain: starts = K, or seeds)")
+    end
     local lower = 0 -- starts whose search capped the friction (the certificates did not)
     for _, st in ipairs(r.starts) do lower = lower + (st.search_mu and 1 or 0) end
     if lower > 0 then
-      say("  (%d of them searched at a lower friction, r.starts[k].search_mu; every certificate holds", lower)
-      say("  each joint to its own)")
+      say("  (%d of the restarts searched at a lower friction, r.starts[k].search_mu; every certificate", lower)
+      say("  holds each joint to its own)")
     end
     if went_on then
       say("  start %d, cut at its cap, went on for %d more fixed LPs%s", went_on.continues,

@@ -176,6 +176,20 @@ static const char *search_after(const run *r, const bl_solution *s, const bl_mod
     return NULL;
 }
 
+/* How many different alphas the starts of s certified (to 1e-6 of each). */
+static int different_answers(const bl_solution *s)
+{
+    int n = 0;
+    for (int i = 0; i < s->nstarts; i++) {
+        double a = s->start[i].alpha;
+        int seen = !isfinite(a);
+        for (int j = 0; j < i && !seen; j++)
+            seen = fabs(s->start[j].alpha - a) <= 1e-6 * fmax(fabs(a), 1e-12);
+        n += !seen;
+    }
+    return n;
+}
+
 /* Whether the search at (mu_rigid, mu_cap) changes some joint's friction. */
 static int search_differs(const bl_model *m, double mu_rigid, double mu_cap)
 {
@@ -1602,19 +1616,29 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
     start_state first = {0}; /* where start 0 stopped */
     int low_from = 0; /* the first of the restarts at a lower friction, or 0 */
     int small = 0;    /* a small model, with BL_SEQLP_SEARCH_SMALL restarts (below) */
+    int varied = 0;   /* ... and BL_SEQLP_SEARCH_VARIED more have been planned */
     for (int k = 0; k == 0 || stop == BL_LP_OPTIMAL; k++) {
         if (k > starts) {
             /* The restarts planned have run (or been skipped).  After a
              * probe, the rest of the search where one of its two
              * certified more than BL_SEQLP_PROBE_DROP below the answer it
-             * probed; after a search of BL_SEQLP_SEARCH restarts on a
-             * model above the small sizes, BL_SEQLP_LOW_STARTS more at a
-             * lower friction (search_friction). */
+             * probed; after the search of a small model, whose restarts
+             * certified BL_SEQLP_VARIED or more different answers,
+             * BL_SEQLP_SEARCH_VARIED more; after a search of
+             * BL_SEQLP_SEARCH restarts on a model above the small sizes,
+             * BL_SEQLP_LOW_STARTS more at a lower friction
+             * (search_friction). */
             if (probe == probe && r.best_alpha < probe - BL_SEQLP_PROBE_DROP * fabs(probe)) {
                 starts = k - 1 - BL_SEQLP_PROBE + BL_SEQLP_SEARCH;
                 s->restarts_why = "probe found";
             }
             probe = NAN;
+            if (k > starts && small && !varied && o->starts < 0 &&
+                different_answers(s) >= BL_SEQLP_VARIED) {
+                varied = 1;
+                starts = k - 1 + BL_SEQLP_SEARCH_VARIED;
+                s->restarts_why = "varied";
+            }
             if (k > starts && !low_from && sliding && o->starts < 0 && starts >= BL_SEQLP_SEARCH && !small &&
                 bl_model_finite_friction(mc)) {
                 low_from = k;
