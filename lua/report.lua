@@ -46,6 +46,14 @@ function Result.__tostring(r)
   elseif r.status == "optimal" and r.stands == nil then
     say("  (whether the dead load alone has an equilibrium was not decided: its LP stopped short)")
   end
+  if r.status == "numerical trouble" then -- what may finish instead
+    if r.lp == "ipm" then
+      say("  (round-off stopped the interior point short of its tolerance: lp = \"simplex\" may finish,")
+      say("  or a looser lp_tolerance where one below its default of 1e-8 was asked)")
+    elseif r.lp == "simplex" then
+      say("  (the simplex lost its way to round-off: lp = \"ipm\" may finish)")
+    end
+  end
   if r.note and (not r.certified or r.interrupted or r.time_up) then
     say("  %s", r.note)
     if not r.certified and r.note:find("had no equilibrium with the relaxed friction", 1, true) then
