@@ -89,9 +89,9 @@ return function(core)
     return table.concat(lines, "\n")
   end }
   local point_load = methods.load
-  function methods.load(m, t)
+  function methods.load(m, t, ...)
     with_colon(m, "load", "{...}")
-    if type(t) ~= "table" then return point_load(m, t) end
+    if type(t) ~= "table" or select("#", ...) > 0 then return point_load(m, t, ...) end
     local points, rest, spread = {}, {}, nil
     for k, v in pairs(t) do
       if (k == "dead" or k == "live") and type(v) == "table" and (v.over ~= nil or v.q ~= nil) then
@@ -112,12 +112,15 @@ return function(core)
   report.draw = core.draw
   report.vtk = core.vtk
 
-  -- The latest result, kept also when Ctrl-C stopped the solve.
   -- a command of no arguments given some (undo(5) undid one command)
-  local function none(name, n, what)
-    if n > 0 then error(("%s: takes no arguments, got %d%s"):format(name, n, what or ""), 3) end
+  local function none(name, n)
+    if n > 0 then
+      error(("%s: takes no arguments, got %d%s"):format(name, n, name == "undo" and
+        " (it takes back the last command that added blocks: call it again for more)" or ""), 3)
+    end
   end
 
+  -- The latest result, kept also when Ctrl-C stopped the solve.
   function M.last(...)
     none("last", select("#", ...))
     local r = core.last()
@@ -152,7 +155,7 @@ return function(core)
     end
   end
 
-  for _, name in ipairs { "block", "contacts", "interface", "load", "solve", "stats" } do
+  for _, name in ipairs { "block", "contacts", "interface", "load", "solve" } do
     M[name] = function(t, ...)
       if select("#", ...) > 0 then
         error(("%s: takes one table of fields, got %d arguments"):format(name, 1 + select("#", ...)), 2)
@@ -160,12 +163,13 @@ return function(core)
       return methods[name](need(name), t)
     end
   end
+  function M.stats(...) return methods.stats(need("stats"), ...) end
   -- m:block{} and block{}, which calls it
   local one_block = methods.block
-  function methods.block(m, t)
+  function methods.block(m, t, ...)
     with_colon(m, "block", "{...}")
     local before = core.blocks(m)
-    local b = one_block(m, t)
+    local b = one_block(m, t, ...)
     added(m, before)
     return b
   end
@@ -175,7 +179,7 @@ return function(core)
   -- gone with the loads and joint settings that name them; returns m.
   function methods.undo(m, ...)
     with_colon(m, "undo", "()")
-    none("undo", select("#", ...), " (it takes back the last command that added blocks: call it again for more)")
+    none("undo", select("#", ...))
     local stack, n = made[m] or {}, core.blocks(m)
     -- (a wall's own blocks were pushed one by one before the wall)
     while #stack > 0 and stack[#stack] >= n do table.remove(stack) end
@@ -187,14 +191,14 @@ return function(core)
     return m
   end
   function M.undo(...)
-    none("undo", select("#", ...), " (it takes back the last command that added blocks: call it again for more)")
+    none("undo", select("#", ...))
     return methods.undo(need("undo"))
   end
 
   -- load{...} is the DSL's; load("chunk") and load(fn) stay Lua's own.
   local lua_load, dsl_load = load, M.load
   function M.load(t, ...)
-    if type(t) == "table" or t == nil then return dsl_load(t) end
+    if type(t) == "table" or t == nil then return dsl_load(t, ...) end
     return lua_load(t, ...)
   end
 

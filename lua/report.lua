@@ -158,26 +158,30 @@ function Result.__tostring(r)
       if st.continues then went_on = st end
     end
     local paths = #r.starts - (went_on and 1 or 0)
-    -- how many different answers the starts certified (to 1e-6), as the
-    -- default counts them for "varied" (src/seqlp.c)
-    local answers = {}
-    for _, st in ipairs(r.starts) do
+    -- how many different answers the starts certified (to 1e-6 of an
+    -- earlier start's), as the default counts them for "varied"
+    -- (different_answers, src/seqlp.c)
+    local answers = 0
+    for k, st in ipairs(r.starts) do
       local seen = not st.alpha
-      for _, a in ipairs(answers) do seen = seen or math.abs(a - st.alpha) <= 1e-6 * math.abs(st.alpha) end
-      if not seen then answers[#answers + 1] = st.alpha end
+      for j = 1, k - 1 do
+        local a = r.starts[j].alpha
+        seen = seen or (a and math.abs(a - st.alpha) <= 1e-6 * math.abs(st.alpha))
+      end
+      answers = answers + (seen and 0 or 1)
     end
-    local different = #answers > 1 and (", %d different answers"):format(#answers) or ""
     if r.none_dilates then -- said above
     elseif r.assoc_is_solution then
       say("  (with unlimited friction the associative alpha is the same: that answer is itself a")
       if paths > 1 then
-        say("  non-associative solution; %d restarts looked for lower ones%s)", paths - 1, different)
+        say("  non-associative solution; %d restarts looked for lower ones%s)", paths - 1,
+            answers > 1 and (", %d different answers"):format(answers) or "")
       else
         say("  non-associative solution; starts = K looks for lower ones)")
       end
     elseif paths > 1 then
       say("  (%d starts, each another path to a solution: %d certified%s%s)", paths, certified,
-          #answers > 1 and (", %d answers"):format(#answers) or "", r.certified and "; alpha is the lowest" or "")
+          answers > 1 and (", %d answers"):format(answers) or "", r.certified and "; alpha is the lowest" or "")
       -- the rules apply to the first start to certify: start 1, or a
       -- retry where start 1 did not
       local why, k = r.restarts_why, 1
@@ -205,8 +209,10 @@ function Result.__tostring(r)
       say("  (one start: a solution, not always the lowest; starts = K looks for lower ones)")
     end
     if r.restarts_why == "varied" then -- (BL_SEQLP_VARIED, BL_SEQLP_SEARCH_VARIED in src/seqlp.h)
-      say("  (the first 20 restarts on a model this small certified 4 or more different answers, and")
-      say("  40 more followed; where so many differ, lower ones may remain: starts = K, or seeds)")
+      say("  (start 1 and its 20 restarts on a model this small certified 4 or more different answers,")
+      say("  and 40 more restarts %s; where so many differ, lower ones may remain: starts = K",
+          (r.interrupted or r.time_up) and "were planned" or "followed")
+      say("  and other seeds look further)")
     end
     local lower = 0 -- starts whose search capped the friction (the certificates did not)
     for _, st in ipairs(r.starts) do lower = lower + (st.search_mu and 1 or 0) end
@@ -647,6 +653,8 @@ end
 
 -- Gives a fresh result from the core its metatables.
 function report.wrap(r)
+  -- (once: last() hands back the table solve{} wrapped)
+  if getmetatable(r) == Result or (Result2D and getmetatable(r) == Result2D) then return r end
   if r.dead then report.wrap(r.dead) end
   for _, k in ipairs(r.interfaces or {}) do setmetatable(k, Interface) end
   local vmax, wmax = 0.0, 0.0
@@ -658,12 +666,11 @@ function report.wrap(r)
   end
   local three = r.mechanism and r.mechanism[1] and #r.mechanism[1] == 6
   -- each entry an empty table that reads its block's velocity, so that no
-  -- assignment, to a component or a new name, changes the answer (r:json
-  -- writes it)
+  -- assignment, to a component or a name, changes it
   local shown = { __tostring = function(p) return velocity_text(VELOCITY[p], vmax, wmax) end,
                   __index = function(p, k)
                     local u = VELOCITY[p]
-                    if math.type(k) == "integer" then return u[k] end
+                    if type(k) == "number" then return u[k] end -- (u[1.0] is u[1])
                     return velocity_field(u, k)
                   end,
                   __len = function(p) return #VELOCITY[p] end,

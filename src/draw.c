@@ -826,7 +826,7 @@ static void couple_arc(cairo_t *cr, bl_vec2 at, double r, double head, int ccw)
 
 /* A couple of point load pl, drawn at where it acts (p, model units, on
  * its block as moved): in 2D, and in 3D where its moment points within
- * 60 degrees of the line of sight, as an arc with the sense seen
+ * 30 degrees of the line of sight, as an arc with the sense seen
  * (couple_arc); else as its moment's vector, an arrow with two heads. */
 static void couple(cairo_t *cr, const pic *P, const bl_point_load *pl, bl_vec2 p, double len, double head)
 {

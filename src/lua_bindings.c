@@ -57,6 +57,12 @@ static int fail_in(lua_State *L, const char *cmd, const char *msg)
     return fail(L, "%s: %s", cmd, msg);
 }
 
+/* A model method of one table of fields (m:block{}, ...) given more. */
+static void one_table(lua_State *L, const char *fn)
+{
+    if (lua_gettop(L) > 2) fail(L, "%s: takes one table of fields, got %d arguments", fn, lua_gettop(L) - 1);
+}
+
 /* An omitted table argument at idx (the last one) reads as {}. */
 static void opt_table(lua_State *L, int idx)
 {
@@ -164,31 +170,37 @@ static int boolean_field(lua_State *L, int idx, const char *fn, const char *f, i
     return v;
 }
 
+/* Coordinate i (0-based) of the point of n coordinates on the top of the
+ * stack, which must be a finite number: else the message says which one,
+ * and what it is. */
+static double coordinate(lua_State *L, const char *fn, const char *what, int i, int n)
+{
+    static const char *const names[] = {"x", "y", "z"};
+    const char *form = n == 3 ? "{x, y, z} of three finite numbers" : "{x, y} of two finite numbers";
+    lua_geti(L, -1, i + 1);
+    int type = lua_type(L, -1);
+    double v = lua_tonumber(L, -1);
+    if (type == LUA_TNIL) fail(L, "%s: %s must be a point %s, its %s is missing", fn, what, form, names[i]);
+    if (type != LUA_TNUMBER)
+        fail(L, "%s: %s must be a point %s, its %s is a %s", fn, what, form, names[i], luaL_typename(L, -1));
+    if (!isfinite(v))
+        fail(L, "%s: %s must be a point %s, its %s is %s", fn, what, form, names[i],
+             isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
+    lua_pop(L, 1);
+    return v;
+}
+
 /* Reads the value on top of the stack as a point {x, y}; pops it. */
 static bl_vec2 to_point(lua_State *L, const char *fn, const char *what)
 {
     if (!lua_istable(L, -1))
         fail(L, "%s: %s must be a point {x, y}, got %s", fn, what, luaL_typename(L, -1));
-    double c[2];
-    for (int i = 0; i < 2; i++) {
-        lua_geti(L, -1, i + 1);
-        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1))) {
-            if (lua_isnil(L, -1))
-                fail(L, "%s: %s must be a point {x, y} of two numbers, got %d", fn, what,
-                     (int)lua_rawlen(L, -2));
-            int number = lua_type(L, -1) == LUA_TNUMBER;
-            const char *got = number ? luaL_tolstring(L, -1, NULL) : luaL_typename(L, -1);
-            fail(L, "%s: %s must be a point {x, y} of two finite numbers, its %s is %s%s", fn, what,
-                 i ? "y" : "x", number ? "" : "a ", got);
-        }
-        c[i] = lua_tonumber(L, -1);
-        lua_pop(L, 1);
-    }
+    double x = coordinate(L, fn, what, 0, 2), y = coordinate(L, fn, what, 1, 2);
     if (lua_rawlen(L, -1) != 2)
         fail(L, "%s: %s must be a point {x, y} of two numbers, got %d", fn, what,
                    (int)lua_rawlen(L, -1));
     lua_pop(L, 1);
-    return bl_v2(c[0], c[1]);
+    return bl_v2(x, y);
 }
 
 /* The length of the list on the top of the stack, which must have no other
@@ -222,17 +234,11 @@ static bl_vec3 to_point3(lua_State *L, const char *fn, const char *what)
 {
     if (!lua_istable(L, -1))
         fail(L, "%s: %s must be a point {x, y, z}, got %s", fn, what, luaL_typename(L, -1));
+    double c[3];
+    for (int i = 0; i < 3; i++) c[i] = coordinate(L, fn, what, i, 3);
     if (lua_rawlen(L, -1) != 3)
         fail(L, "%s: %s must be a point {x, y, z} of three numbers, got %d", fn, what,
              (int)lua_rawlen(L, -1));
-    double c[3];
-    for (int i = 0; i < 3; i++) {
-        lua_geti(L, -1, i + 1);
-        if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(lua_tonumber(L, -1)))
-            fail(L, "%s: %s must be a point {x, y, z} of three finite numbers", fn, what);
-        c[i] = lua_tonumber(L, -1);
-        lua_pop(L, 1);
-    }
     lua_pop(L, 1);
     return bl_v3(c[0], c[1], c[2]);
 }
@@ -534,6 +540,7 @@ static int model_block(lua_State *L)
     static const char *const fields[] = {"vertices", "support", "density",    "thickness",
                                          "faces",    "points",  "resolution", NULL};
     bl_model *m = check_model(L, 1);
+    one_table(L, "block");
     check_fields(L, 2, "block", fields, 0);
     if (m->dim == 3) return block_3d(L, m);
     if (field_given(L, 2, "faces") || field_given(L, 2, "points"))
@@ -569,6 +576,7 @@ static int model_contacts(lua_State *L)
 {
     static const char *const fields[] = {"tol", "gap", NULL};
     bl_model *m = check_model(L, 1);
+    one_table(L, "contacts");
     opt_table(L, 2);
     check_fields(L, 2, "contacts", fields, 0);
     double tol = number_field(L, 2, "contacts", "tol", m->contact_tol, NONNEG);
@@ -595,6 +603,7 @@ static int model_interface(lua_State *L)
 {
     static const char *const fields[] = {"mu", "cohesion", "points", "model", "mu_t", NULL};
     bl_model *m = check_model(L, 1);
+    one_table(L, "interface");
     check_fields(L, 2, "interface", fields, 2);
     bl_joint_spec s = {0};
     lua_geti(L, 2, 1);
@@ -826,6 +835,7 @@ static int model_load(lua_State *L)
     static const char *const dead_choices[] = {"self-weight", "none", NULL};
     static const char *const live_choices[] = {"horizontal", "none", NULL};
     bl_model *m = check_model(L, 1);
+    one_table(L, "load");
     check_fields(L, 2, "load", fields, 0);
     lua_pushnil(L);
     if (!lua_next(L, 2)) return fail(L, "load: an empty table changes nothing: give dead, live, or tilt");
@@ -891,8 +901,7 @@ static int model_load(lua_State *L)
 static int model_stats(lua_State *L)
 {
     bl_model *m = check_model(L, 1);
-    if (lua_gettop(L) > 1 && !(lua_gettop(L) == 2 && lua_isnil(L, 2))) /* (stats() passes nil) */
-        return fail(L, "stats: takes no arguments, got %d", lua_gettop(L) - 1);
+    if (lua_gettop(L) > 1) return fail(L, "stats: takes no arguments, got %d", lua_gettop(L) - 1);
     bl_error err;
     /* a model without blocks has nothing to detect: its counts are 0 */
     if (m->nblocks > 0 && !m->contacts_valid && bl_contact_detect(m, &err))

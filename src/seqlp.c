@@ -1622,7 +1622,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             /* The restarts planned have run (or been skipped).  After a
              * probe, the rest of the search where one of its two
              * certified more than BL_SEQLP_PROBE_DROP below the answer it
-             * probed; after the search of a small model, whose restarts
+             * probed; after the search of a small model, whose starts
              * certified BL_SEQLP_VARIED or more different answers,
              * BL_SEQLP_SEARCH_VARIED more; after a search of
              * BL_SEQLP_SEARCH restarts on a model above the small sizes,

@@ -99,14 +99,15 @@ void bl_seqlp_options_default(bl_seqlp_options *o);
 #define BL_SEQLP_SEARCH_COLUMNS3 1000
 #define BL_SEQLP_RETRY_ROWS 10000
 
-/* Where the BL_SEQLP_SEARCH_SMALL restarts of a small model certified
- * BL_SEQLP_VARIED or more different answers, BL_SEQLP_SEARCH_VARIED more
- * follow.  So many solutions mark a search that has not seen them all: on
+/* Where start 0 and the BL_SEQLP_SEARCH_SMALL restarts of a small model
+ * certified BL_SEQLP_VARIED or more different answers,
+ * BL_SEQLP_SEARCH_VARIED more restarts follow.  So many solutions mark a search that has not seen them all: on
  * 108 runs (W1, W4, W5, a wall with lintels, a running bond of 8 x 8 and
  * a stack bond, mu = 0.65 to 1000, seeds 1-3) the 20 restarts missed the
  * lowest answer of 100 in 28, by up to 14.6 % (W4 at mu = 5, seed 2:
  * 0.30225 for 0.26374), and every miss had certified 4 or more answers;
- * 60 restarts missed 7, by at most 6.3 % (doc/seqlp.md 18). */
+ * 60 restarts missed 7, by at most 6.3 %.  At mu = 0.65 that held on W5
+ * alone of the six, from mu = 1.2 on on nearly every run (doc/seqlp.md 18). */
 #define BL_SEQLP_VARIED 4
 #define BL_SEQLP_SEARCH_VARIED 40
 
