@@ -16,7 +16,7 @@ local COMMANDS = {
   { "arch", "a circular arch of voussoirs on springings (3D: a barrel vault)",
     "angle, centre, density, fill, length, n, radius, segments, span, springings, thickness", "4" },
   { "import", "blocks from a DXF or OBJ drawing",
-    "arc_step, density, file, format, layers, plane, scale, support, thickness", "4" },
+    "arc_step, density, file, format, layers, plane, scale, support, thickness, up", "4" },
   { "box", "3D: a box", "at, density, size, support", "4, 3D models", dim3 = true },
   { "extrude", "3D: a polygon extruded along an axis", "axis, density, from, polygon, support, to",
     "4, 3D models", dim3 = true },

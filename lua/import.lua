@@ -22,7 +22,7 @@ local Skipped = { __tostring = function(list)
 end }
 
 return function(M)
-  local allowed = { file = true, format = true, support = true, scale = true, plane = true,
+  local allowed = { file = true, format = true, support = true, scale = true, plane = true, up = true,
                     density = true, thickness = true, arc_step = true, layers = true }
   local function fail(msg) error("import: " .. msg, 0) end
 
@@ -231,7 +231,7 @@ return function(M)
     if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
     for k in pairs(t) do
       if not allowed[k] then
-        fail(("unknown field '%s' (fields: arc_step, density, file, format, layers, plane, scale, support, thickness)")
+        fail(("unknown field '%s' (fields: arc_step, density, file, format, layers, plane, scale, support, thickness, up)")
              :format(tostring(k)))
       end
     end
@@ -268,6 +268,13 @@ return function(M)
       fail(("field 'plane' must be \"xy\", \"xz\" or \"yz\", got %s"):format(report.show(t.plane)))
     end
     if solid and t.plane ~= nil then fail("field 'plane' is for 2D models") end
+    -- a 3D file's up axis: z (the model's), or y (Blender's OBJ export), which
+    -- turns by 90 degrees about x: (x, y, z) to (x, -z, y)
+    if t.up ~= nil and not solid then fail("field 'up' is for 3D models (2D: field 'plane')") end
+    if t.up ~= nil and t.up ~= "z" and t.up ~= "y" then
+      fail(("field 'up' must be \"z\" or \"y\", got %s"):format(report.show(t.up)))
+    end
+    local y_up = t.up == "y"
     if solid and t.thickness ~= nil then fail("field 'thickness' is for 2D models") end
     for _, k in ipairs { "density", "thickness" } do
       if t[k] ~= nil and not (finite(t[k]) and t[k] > 0) then
@@ -343,7 +350,8 @@ return function(M)
     local lo, hi, scaled = { math.huge, math.huge, math.huge }, { -math.huge, -math.huge, -math.huge }, {}
     for _, s in ipairs(shapes) do
       for i, p in ipairs(s.points) do
-        local q = scaled[p] or { p[1] * scale, p[2] * scale, p[3] * scale }
+        local q = scaled[p] or (y_up and { p[1] * scale, -p[3] * scale, p[2] * scale }
+                                      or { p[1] * scale, p[2] * scale, p[3] * scale })
         scaled[p], s.points[i] = q, q
         for j = 1, 3 do lo[j], hi[j] = math.min(lo[j], q[j]), math.max(hi[j], q[j]) end
       end

@@ -132,6 +132,9 @@ return function(M, fields)
         out[#out + 1] = l
       end
     end
+    if #out == 0 then -- (an opening up to the top course has no lintel)
+      fail(fn, "field 'lintel' is given, but every opening reaches the top course: no course above holds a lintel")
+    end
     return out
   end
 
@@ -178,9 +181,8 @@ return function(M, fields)
     check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true,
                          openings = true, thickness = true, at = true, base = true, lintel = true })
     local box, base_slab = placement("facade", t)
-    local n, m = positive_integer("facade", t, "length"), positive_integer("facade", t, "returns")
+    local n, m = positive_integer("facade", t, "length", 2), positive_integer("facade", t, "returns")
     local courses = positive_integer("facade", t, "courses")
-    if n < 2 then fail("facade", "field 'length' must be at least 2 blocks") end
     local u = number_list("facade", t, "unit", 2, true)
     local L, H = u[1], u[2]
     local th = thickness("facade", t, L, 1)
@@ -225,7 +227,7 @@ return function(M, fields)
     check("corner", t, { lengths = true, courses = true, unit = true, density = true, thickness = true, at = true,
                          base = true })
     local box, base_slab = placement("corner", t)
-    local n = number_list("corner", t, "lengths", 2, true)
+    local n = number_list("corner", t, "lengths", 2)
     for i = 1, 2 do
       local v = math.tointeger(n[i])
       if not v or v < 2 then

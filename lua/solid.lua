@@ -113,6 +113,12 @@ return function(M)
     end
     local R, th = positive("radius"), positive("thickness")
     if th >= 2 * R then fail("dome", "field 'thickness' must be less than the diameter") end
+    -- (at 1e-8 of the radius round-off bent the voussoirs' faces past the
+    -- planarity test, and the message named a face, not the thickness)
+    if th < 1e-6 * R then
+      fail("dome", ("field 'thickness' must be at least 1e-6 of the radius, %.3g, got %s"):format(1e-6 * R,
+           report.show(th)))
+    end
     local rings, k = count("rings", 1), count("segments", 3)
     local c = t.centre and number_list("dome", t, "centre", 3) or { 0, 0, 0 }
     local ri, ro = R - th / 2, R + th / 2

@@ -160,12 +160,13 @@ static int simplify(bl_vec2 *q, int n, double tol)
 
 /* Called for each overlap of two faces: the polygon (k points, in the
  * first face's frame) and its area; a nonzero return stops the search. */
-typedef int overlap_fn(void *ctx, const bl_vec2 *q, int k, double area);
+typedef int overlap_fn(void *ctx, const bl_vec2 *q, int k, double area, int cut);
 
 /* The overlaps of face fa of A (in its frame f) and face fb of B, convex
  * piece by convex piece, each larger in area than tol times its piece's
- * size, passed to each(); B's face is taken the other way round where it
- * faces A (reverse).  Returns the first nonzero return of each(), or 0. */
+ * size, passed to each() with whether either face was cut into pieces;
+ * B's face is taken the other way round where it faces A (reverse).  Returns
+ * the first nonzero return of each(), or 0. */
 static int face_overlaps(const bl_polyhedron *A, int fa, const plane *f, const bl_polyhedron *B, int fb,
                          int reverse, double tol, overlap_fn *each, void *ctx)
 {
@@ -184,7 +185,7 @@ static int face_overlaps(const bl_polyhedron *A, int fa, const plane *f, const b
             if (k < 3) continue;
             double area = bl_polygon_area(out, k);
             if (!(area > tol * sqrt(fabs(bl_polygon_area(sa, ia_len[x]))))) continue;
-            int rc = each(ctx, out, k, area);
+            int rc = each(ctx, out, k, area, pa > 1 || pb > 1);
             if (rc) return rc;
         }
     }
@@ -201,18 +202,44 @@ static double parallel_limit(const bl_polyhedron *p, int k, double tol)
     return fmax(1e-6, 2.0 * tol / sqrt(area));
 }
 
+/* The unit vector along the longest edge of the polygon x (n points; the
+ * first edge of those within 1e-9 of the longest). */
+static bl_vec3 longest_edge(const bl_vec3 *x, int n)
+{
+    bl_vec3 e = bl_v3_sub(x[1], x[0]);
+    for (int i = 1; i < n; i++) {
+        bl_vec3 ei = bl_v3_sub(x[(i + 1) % n], x[i]);
+        if (bl_v3_norm(ei) > (1.0 + 1e-9) * bl_v3_norm(e)) e = ei;
+    }
+    return bl_v3_scale(e, 1.0 / bl_v3_norm(e));
+}
+
+/* The same of face k of p, in its plane f (which a file's rounding may
+ * tilt from the face's edges). */
+static bl_vec3 face_axis(const bl_polyhedron *p, int k, const plane *f)
+{
+    int f0 = p->fs[k], n = p->fs[k + 1] - f0;
+    bl_vec3 x[MAXV];
+    if (n > MAXV) n = MAXV; /* (face_overlaps skips such faces) */
+    for (int i = 0; i < n; i++) x[i] = p->v[p->fi[f0 + i]];
+    bl_vec3 e = longest_edge(x, n);
+    e = bl_v3_sub(e, bl_v3_scale(f->n, bl_v3_dot(e, f->n)));
+    return bl_v3_scale(e, 1.0 / bl_v3_norm(e));
+}
+
 /* What pair3 passes to its overlap callback. */
 typedef struct pair_ctx {
     bl_model *m;
     int ia, ib, found;
     const plane *f;
+    bl_vec3 along;     /* face_axis of A's face, for its pieces' interfaces */
     double h, tol, near_d;
     bl_error *err;
 } pair_ctx;
 
 /* An overlap of two faces that face each other h apart: an interface
  * (h within tol), else a near-miss. */
-static int add_contact(void *ctx, const bl_vec2 *q, int k, double area)
+static int add_contact(void *ctx, const bl_vec2 *q, int k, double area, int cut)
 {
     pair_ctx *c = ctx;
     if (c->h > c->tol) { /* parallel, overlapping, apart: a near-miss */
@@ -232,16 +259,14 @@ static int add_contact(void *ctx, const bl_vec2 *q, int k, double area)
     if (!j.poly) return bl_error_set(c->err, "contacts: out of memory");
     for (int i = 0; i < k; i++) j.poly[i] = to3(c->f, q[i]);
     j.n3 = c->f->n;
-    /* the frame along the polygon's longest edge (the first of those
-     * within 1e-9 of it), which does not depend on where the clipping
-     * began: along the first edge, a dome's symmetric joints got pyramids
-     * turned apart, and moving the dome changed alpha by 0.2 % */
-    bl_vec3 e = bl_v3_sub(j.poly[1], j.poly[0]);
-    for (int i = 1; i < k; i++) {
-        bl_vec3 ei = bl_v3_sub(j.poly[(i + 1) % k], j.poly[i]);
-        if (bl_v3_norm(ei) > (1.0 + 1e-9) * bl_v3_norm(e)) e = ei;
-    }
-    j.t2 = bl_v3_scale(e, 1.0 / bl_v3_norm(e));
+    /* the frame along the longest edge (longest_edge), which does not
+     * depend on where the clipping began: along the first edge, a dome's
+     * symmetric joints got pyramids turned apart, and moving the dome
+     * changed alpha by 0.2 %.  The polygon's, or A's face's where either
+     * face was cut into pieces: an L-shaped bed, cut into triangles, gave
+     * each its pyramid along a diagonal, and slid at 0.92 mu where a
+     * square bed of the same stone slides at mu. */
+    j.t2 = cut ? c->along : longest_edge(j.poly, k);
     j.t3 = bl_v3_cross(j.n3, j.t2);
     j.area3 = area;
     if (bl_model_add_interface(m, &j, c->err)) {
@@ -261,6 +286,7 @@ static int pair3(bl_model *m, int ia, int ib, double tol, double gap, bl_contact
         plane f = face_plane(A, fa);
         double lim = parallel_limit(A, fa, tol);
         c.f = &f;
+        c.along = face_axis(A, fa, &f);
         for (int fb = 0; fb < B->nf; fb++) {
             bl_vec3 n = bl_polyhedron_face_normal(B, fb, NULL);
             if (bl_v3_norm(bl_v3_add(n, f.n)) > lim) continue; /* not facing each other */
@@ -341,9 +367,9 @@ static int overlapping3(const bl_block *X, const bl_block *Y, double tol)
     return 1;
 }
 
-static int any_overlap(void *ctx, const bl_vec2 *q, int k, double area)
+static int any_overlap(void *ctx, const bl_vec2 *q, int k, double area, int cut)
 {
-    (void)ctx, (void)q, (void)k, (void)area;
+    (void)ctx, (void)q, (void)k, (void)area, (void)cut;
     return 1;
 }
 

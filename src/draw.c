@@ -839,8 +839,8 @@ static void couple(cairo_t *cr, const pic *P, const bl_point_load *pl, bl_vec2 p
     }
     double size = hypot(towards, bl_v2_norm(in));
     if (size == 0.0) return;
-    if (bl_v2_norm(in) < 0.5 * size) {
-        couple_arc(cr, at, 0.4 * len, head, towards > 0.0);
+    if (bl_v2_norm(in) < 0.5 * size) { /* (a live one around a dead one at the same point) */
+        couple_arc(cr, at, (pl->live ? 0.45 : 0.3) * len, head, towards > 0.0);
         return;
     }
     bl_vec2 d = bl_v2_scale(in, 1.0 / bl_v2_norm(in)), tail = bl_v2_sub(at, bl_v2_scale(d, len));

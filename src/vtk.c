@@ -81,8 +81,9 @@ int bl_write_vtk(const bl_solution *s, const char *file, bl_error *err)
         for (int b = 0; b < m->nblocks; b++)
             for (int k = 0; k < m->blocks[b].solid.nf; k++) {
                 const double *u = s->u + 6 * b + 3 * v;
-                fprintf(f, "%.10g %.10g %.10g\n", mech ? u[0] : 0.0, mech ? u[1] : 0.0,
-                        mech ? u[2] : 0.0);
+                /* (+ 0.0: a -0 written as 0) */
+                fprintf(f, "%.10g %.10g %.10g\n", mech ? u[0] + 0.0 : 0.0, mech ? u[1] + 0.0 : 0.0,
+                        mech ? u[2] + 0.0 : 0.0);
             }
         for (int k = 0; k < m->ninterfaces; k++) fprintf(f, "0 0 0\n");
     }

@@ -52,6 +52,24 @@ for _, case in ipairs { { mu = 0.65, want = 0.4, what = "rocks, b/h = 0.4" },
   T.near(r.alpha, case.want, 1e-9, "OBJ 3D block " .. case.what)
 end
 
+-- The same file written y up (Blender's OBJ export: a file's (x, y, z) is
+-- the model's (x, -z, y)), read with up = "y": the stone stands 1000 high,
+-- and rocks about its edge at b/h = 0.4 as above; read as it is (z up) it
+-- lies on its side, 600 high along z.
+local yup = write(".obj", (box_obj("ground slab", -1000, -1000, -300, 2000, 2000, 300)
+                          .. box_obj("stone", -200, -300, 0, 400, 600, 1000)):gsub("v (%S+) (%S+) (%S+)",
+                          function(x, y, z) return ("v %s %s %.17g"):format(x, z, -tonumber(y)) end))
+model { dim = 3, mu = 0.65, density = 20 }
+local yb = import { file = yup, scale = 0.001, support = "^ground", up = "y" }
+local ys = current():block_info(yb[2])
+T.ok(math.abs(ys.centroid[3] - 0.5) <= 1e-12 and math.abs(ys.centroid[2]) <= 1e-12,
+     "OBJ 3D, up = \"y\": the stone stands on the slab, its centroid at z = 0.5", ("%.6g"):format(ys.centroid[3]))
+load { live = "horizontal" }
+T.near(solve { flow = "associative" }.alpha, 0.4, 1e-9, "OBJ 3D, up = \"y\": the stone rocks at b/h = 0.4")
+model { dim = 3 }
+local flat = import { file = yup, scale = 0.001 }
+T.near(current():block_info(flat[2]).centroid[2], 0.5, 1e-12, "OBJ 3D read z up: the stone lies along +y")
+
 -- 2. A non-convex object (an L swept 1 along y) keeps its faces: volume 3,
 -- centroid (5/6, 1/2, 5/6); an o line followed by a g line of the same
 -- object makes one block.
@@ -195,6 +213,8 @@ local function refused(dim, t, what, ...)
   T.eq(stats().blocks + stats().supports, before, "import refusing " .. what .. ": the model as it was")
 end
 local open = write(".obj", (Ltext:gsub("f 6 1 7 12\n$", "")))
+refused(3, { file = yup, up = "x" }, "up = \"x\"", "field 'up' must be \"z\" or \"y\"")
+refused(2, { file = yup, up = "y" }, "up in 2D", "field 'up' is for 3D models")
 refused(3, { file = "/nonexistent/x.obj" }, "a file it cannot open", "import: field 'file': cannot open",
         "/nonexistent/x.obj")
 refused(3, { file = write(".obj", "v 0 0 0\nv 1 0\n") }, "a vertex with two numbers", "line 2",

@@ -164,6 +164,16 @@ T.near(on_top, 1.5, 1e-12, "an L-shaped face on two boxes: the contact covers th
 local side = 0
 for _, i in ipairs(tl) do if (i.a == 2 and i.b == 3) then side = side + i.area end end
 T.near(side, 1, 1e-12, "two boxes side by side: a vertical joint of area 1")
+-- the L's pieces share one frame: a squat L-shaped stone (1 x 1 in plan,
+-- arms 0.3 wide, 0.3 high: it cannot tip, b/h >= 1) pushed along one of its
+-- edges slides at mu, as a square bed does, with both flow rules (its bed,
+-- cut into triangles, had each pyramid along a diagonal: 0.5549 and 0.5897
+-- at mu = 0.6, a tester's)
+model { dim = 3, mu = 0.6 }
+box { size = { 3, 3, 0.3 }, at = { 0.5, 0.5, -0.3 }, support = true }
+extrude { polygon = { { 0, 0 }, { 1, 0 }, { 1, 0.3 }, { 0.3, 0.3 }, { 0.3, 1 }, { 0, 1 } }, axis = "z", from = 0, to = 0.3 }
+T.near(solve {}.alpha, 0.6, 1e-7, "an L-shaped bed pushed along its edge slides at mu = 0.6 (nonassociative)")
+T.near(solve { flow = "associative" }.alpha, 0.6, 1e-7, "... and associative")
 
 -- a wall of 20 x 20 boxes, one thick (x along it, z up), on a base: every
 -- bed and head joint found, 2 N (N - 1) + N of them
