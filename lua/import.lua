@@ -270,7 +270,9 @@ return function(M)
     if solid and t.plane ~= nil then fail("field 'plane' is for 2D models") end
     -- a 3D file's up axis: z (the model's), or y (Blender's OBJ export), which
     -- turns by 90 degrees about x: (x, y, z) to (x, -z, y)
-    if t.up ~= nil and not solid then fail("field 'up' is for 3D models (2D: field 'plane')") end
+    if t.up ~= nil and not solid then
+      fail("field 'up' is for 3D models (the plane of a 2D model's OBJ is field 'plane'; a DXF's is x-y)")
+    end
     if t.up ~= nil and t.up ~= "z" and t.up ~= "y" then
       fail(("field 'up' must be \"z\" or \"y\", got %s"):format(report.show(t.up)))
     end

@@ -160,13 +160,12 @@ static int simplify(bl_vec2 *q, int n, double tol)
 
 /* Called for each overlap of two faces: the polygon (k points, in the
  * first face's frame) and its area; a nonzero return stops the search. */
-typedef int overlap_fn(void *ctx, const bl_vec2 *q, int k, double area, int cut);
+typedef int overlap_fn(void *ctx, const bl_vec2 *q, int k, double area);
 
 /* The overlaps of face fa of A (in its frame f) and face fb of B, convex
  * piece by convex piece, each larger in area than tol times its piece's
- * size, passed to each() with whether either face was cut into pieces;
- * B's face is taken the other way round where it faces A (reverse).  Returns
- * the first nonzero return of each(), or 0. */
+ * size, passed to each(); B's face is taken the other way round where it
+ * faces A (reverse).  Returns the first nonzero return of each(), or 0. */
 static int face_overlaps(const bl_polyhedron *A, int fa, const plane *f, const bl_polyhedron *B, int fb,
                          int reverse, double tol, overlap_fn *each, void *ctx)
 {
@@ -185,7 +184,7 @@ static int face_overlaps(const bl_polyhedron *A, int fa, const plane *f, const b
             if (k < 3) continue;
             double area = bl_polygon_area(out, k);
             if (!(area > tol * sqrt(fabs(bl_polygon_area(sa, ia_len[x]))))) continue;
-            int rc = each(ctx, out, k, area, pa > 1 || pb > 1);
+            int rc = each(ctx, out, k, area);
             if (rc) return rc;
         }
     }
@@ -202,44 +201,18 @@ static double parallel_limit(const bl_polyhedron *p, int k, double tol)
     return fmax(1e-6, 2.0 * tol / sqrt(area));
 }
 
-/* The unit vector along the longest edge of the polygon x (n points; the
- * first edge of those within 1e-9 of the longest). */
-static bl_vec3 longest_edge(const bl_vec3 *x, int n)
-{
-    bl_vec3 e = bl_v3_sub(x[1], x[0]);
-    for (int i = 1; i < n; i++) {
-        bl_vec3 ei = bl_v3_sub(x[(i + 1) % n], x[i]);
-        if (bl_v3_norm(ei) > (1.0 + 1e-9) * bl_v3_norm(e)) e = ei;
-    }
-    return bl_v3_scale(e, 1.0 / bl_v3_norm(e));
-}
-
-/* The same of face k of p, in its plane f (which a file's rounding may
- * tilt from the face's edges). */
-static bl_vec3 face_axis(const bl_polyhedron *p, int k, const plane *f)
-{
-    int f0 = p->fs[k], n = p->fs[k + 1] - f0;
-    bl_vec3 x[MAXV];
-    if (n > MAXV) n = MAXV; /* (face_overlaps skips such faces) */
-    for (int i = 0; i < n; i++) x[i] = p->v[p->fi[f0 + i]];
-    bl_vec3 e = longest_edge(x, n);
-    e = bl_v3_sub(e, bl_v3_scale(f->n, bl_v3_dot(e, f->n)));
-    return bl_v3_scale(e, 1.0 / bl_v3_norm(e));
-}
-
 /* What pair3 passes to its overlap callback. */
 typedef struct pair_ctx {
     bl_model *m;
     int ia, ib, found;
     const plane *f;
-    bl_vec3 along;     /* face_axis of A's face, for its pieces' interfaces */
     double h, tol, near_d;
     bl_error *err;
 } pair_ctx;
 
 /* An overlap of two faces that face each other h apart: an interface
  * (h within tol), else a near-miss. */
-static int add_contact(void *ctx, const bl_vec2 *q, int k, double area, int cut)
+static int add_contact(void *ctx, const bl_vec2 *q, int k, double area)
 {
     pair_ctx *c = ctx;
     if (c->h > c->tol) { /* parallel, overlapping, apart: a near-miss */
@@ -259,14 +232,16 @@ static int add_contact(void *ctx, const bl_vec2 *q, int k, double area, int cut)
     if (!j.poly) return bl_error_set(c->err, "contacts: out of memory");
     for (int i = 0; i < k; i++) j.poly[i] = to3(c->f, q[i]);
     j.n3 = c->f->n;
-    /* the frame along the longest edge (longest_edge), which does not
-     * depend on where the clipping began: along the first edge, a dome's
-     * symmetric joints got pyramids turned apart, and moving the dome
-     * changed alpha by 0.2 %.  The polygon's, or A's face's where either
-     * face was cut into pieces: an L-shaped bed, cut into triangles, gave
-     * each its pyramid along a diagonal, and slid at 0.92 mu where a
-     * square bed of the same stone slides at mu. */
-    j.t2 = cut ? c->along : longest_edge(j.poly, k);
+    /* the frame along the polygon's longest edge (the first of those
+     * within 1e-9 of it), which does not depend on where the clipping
+     * began: along the first edge, a dome's symmetric joints got pyramids
+     * turned apart, and moving the dome changed alpha by 0.2 % */
+    bl_vec3 e = bl_v3_sub(j.poly[1], j.poly[0]);
+    for (int i = 1; i < k; i++) {
+        bl_vec3 ei = bl_v3_sub(j.poly[(i + 1) % k], j.poly[i]);
+        if (bl_v3_norm(ei) > (1.0 + 1e-9) * bl_v3_norm(e)) e = ei;
+    }
+    j.t2 = bl_v3_scale(e, 1.0 / bl_v3_norm(e));
     j.t3 = bl_v3_cross(j.n3, j.t2);
     j.area3 = area;
     if (bl_model_add_interface(m, &j, c->err)) {
@@ -277,16 +252,94 @@ static int add_contact(void *ctx, const bl_vec2 *q, int k, double area, int cut)
     return 0;
 }
 
+/* The distance from x to the segment a-b. */
+static double to_segment(bl_vec3 x, bl_vec3 a, bl_vec3 b)
+{
+    bl_vec3 d = bl_v3_sub(b, a);
+    double dd = bl_v3_dot(d, d), t = dd > 0.0 ? bl_v3_dot(bl_v3_sub(x, a), d) / dd : 0.0;
+    t = fmin(1.0, fmax(0.0, t));
+    return bl_v3_norm(bl_v3_sub(x, bl_v3_add(a, bl_v3_scale(d, t))));
+}
+
+/* Whether the edge of interface g[i] whose middle is x lies on an edge of
+ * another of the n interfaces g (within tol): inside their union. */
+static int inner_edge(const bl_model *m, const int *g, int n, int i, bl_vec3 x, double tol)
+{
+    for (int j = 0; j < n; j++) {
+        const bl_interface *q = &m->interfaces[g[j]];
+        for (int e = 0; e < q->np && j != i; e++)
+            if (to_segment(x, q->poly[e], q->poly[(e + 1) % q->np]) <= tol) return 1;
+    }
+    return 0;
+}
+
+/* The interfaces first..m->ninterfaces-1 join one pair of blocks; those
+ * in one plane (within tol) share one frame, along the longest edge of
+ * their union's boundary (the first of those within 1e-9 of it; an edge
+ * no other of them shares).  A lone interface keeps its own, along its
+ * longest edge.  Each piece's own, along an edge that may be a cut, gave
+ * an L-shaped bed, cut into triangles (by the detection where its face is
+ * not convex, or by the file it came from), pyramids along the diagonals,
+ * and it slid at 0.92 mu where a square bed of the same stone slides at
+ * mu.  The union's boundary does not depend on how the faces were cut,
+ * nor on which block is which. */
+static int share_frames(bl_model *m, int first, double tol, bl_error *err)
+{
+    int n = m->ninterfaces - first;
+    if (n < 2) return 0;
+    int *g = malloc((size_t)n * sizeof *g);
+    char *done = calloc((size_t)n, 1);
+    if (!g || !done) {
+        free(g), free(done);
+        return bl_error_set(err, "contacts: out of memory");
+    }
+    for (int i = 0; i < n; i++) {
+        if (done[i]) continue;
+        const bl_interface *p = &m->interfaces[first + i];
+        int k = 0;
+        for (int j = i; j < n; j++) {
+            const bl_interface *q = &m->interfaces[first + j];
+            if (!done[j] && bl_v3_dot(p->n3, q->n3) > 1.0 - 1e-9 &&
+                fabs(bl_v3_dot(p->n3, bl_v3_sub(q->poly[0], p->poly[0]))) <= tol)
+                g[k++] = first + j, done[j] = 1;
+        }
+        if (k < 2) continue;
+        double best = 0.0;
+        bl_vec3 e = {0, 0, 0};
+        for (int a = 0; a < k; a++) {
+            const bl_interface *q = &m->interfaces[g[a]];
+            for (int v = 0; v < q->np; v++) {
+                bl_vec3 x = q->poly[v], y = q->poly[(v + 1) % q->np], d = bl_v3_sub(y, x);
+                if (bl_v3_norm(d) > (1.0 + 1e-9) * best &&
+                    !inner_edge(m, g, k, a, bl_v3_scale(bl_v3_add(x, y), 0.5), tol)) {
+                    best = bl_v3_norm(d);
+                    e = d;
+                }
+            }
+        }
+        if (best == 0.0) continue;
+        for (int a = 0; a < k; a++) {
+            bl_interface *q = &m->interfaces[g[a]];
+            /* (in each one's plane: a file's rounding may tilt them apart) */
+            bl_vec3 t = bl_v3_sub(e, bl_v3_scale(q->n3, bl_v3_dot(e, q->n3)));
+            q->t2 = bl_v3_scale(t, 1.0 / bl_v3_norm(t));
+            q->t3 = bl_v3_cross(q->n3, q->t2);
+        }
+    }
+    free(g), free(done);
+    return 0;
+}
+
 /* Every interface between blocks ia and ib; a near-miss or nothing. */
 static int pair3(bl_model *m, int ia, int ib, double tol, double gap, bl_contact_problems *pr, bl_error *err)
 {
     const bl_polyhedron *A = &m->blocks[ia].solid, *B = &m->blocks[ib].solid;
     pair_ctx c = {.m = m, .ia = ia, .ib = ib, .tol = tol, .err = err};
+    int first = m->ninterfaces;
     for (int fa = 0; fa < A->nf; fa++) {
         plane f = face_plane(A, fa);
         double lim = parallel_limit(A, fa, tol);
         c.f = &f;
-        c.along = face_axis(A, fa, &f);
         for (int fb = 0; fb < B->nf; fb++) {
             bl_vec3 n = bl_polyhedron_face_normal(B, fb, NULL);
             if (bl_v3_norm(bl_v3_add(n, f.n)) > lim) continue; /* not facing each other */
@@ -295,6 +348,7 @@ static int pair3(bl_model *m, int ia, int ib, double tol, double gap, bl_contact
             if (face_overlaps(A, fa, &f, B, fb, 1, tol, add_contact, &c)) return -1;
         }
     }
+    if (share_frames(m, first, tol, err)) return -1;
     if (c.near_d > 0.0 && !c.found && !bl_contact_declared(m, ia, ib)) {
         if (pr->nnear < 5)
             snprintf(pr->near[pr->nnear], sizeof pr->near[0], "blocks %d and %d (%.3g apart)",
@@ -367,9 +421,9 @@ static int overlapping3(const bl_block *X, const bl_block *Y, double tol)
     return 1;
 }
 
-static int any_overlap(void *ctx, const bl_vec2 *q, int k, double area, int cut)
+static int any_overlap(void *ctx, const bl_vec2 *q, int k, double area)
 {
-    (void)ctx, (void)q, (void)k, (void)area, (void)cut;
+    (void)ctx, (void)q, (void)k, (void)area;
     return 1;
 }
 

@@ -70,6 +70,62 @@ model { dim = 3 }
 local flat = import { file = yup, scale = 0.001 }
 T.near(current():block_info(flat[2]).centroid[2], 0.5, 1e-12, "OBJ 3D read z up: the stone lies along +y")
 
+-- An L-shaped stone 1 x 1 in plan, arms 0.3 wide, 0.3 high, its bed and
+-- top written as triangles (as exporters write them), on a slab: pushed
+-- along its edge it slides at mu, as one bed polygon does (it cannot tip:
+-- b/h >= 1).  Each triangle's pyramid along its own longest edge, a
+-- diagonal, gave 0.5713 and 0.5575 at mu = 0.6 (a review's).
+local tri = write(".obj", [[
+o slab
+v -2 -2 -0.3
+v 3 -2 -0.3
+v 3 3 -0.3
+v -2 3 -0.3
+v -2 -2 0
+v 3 -2 0
+v 3 3 0
+v -2 3 0
+f 1 4 3 2
+f 5 6 7 8
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+o stone
+v 0 0 0
+v 1 0 0
+v 1 0.3 0
+v 0.3 0.3 0
+v 0.3 1 0
+v 0 1 0
+v 0 0 0.3
+v 1 0 0.3
+v 1 0.3 0.3
+v 0.3 0.3 0.3
+v 0.3 1 0.3
+v 0 1 0.3
+f 9 12 11
+f 9 11 10
+f 9 14 13
+f 9 13 12
+f 15 16 17
+f 15 17 18
+f 15 18 19
+f 15 19 20
+f 9 10 16 15
+f 10 11 17 16
+f 11 12 18 17
+f 12 13 19 18
+f 13 14 20 19
+f 14 9 15 20
+]])
+for _, flow in ipairs { "associative", "nonassociative" } do
+  model { dim = 3, mu = 0.6 }
+  import { file = tri, support = "slab" }
+  load { live = "horizontal" }
+  T.near(solve { flow = flow }.alpha, 0.6, 1e-7, "OBJ L-shaped stone, its bed as triangles: slides at mu (" .. flow .. ")")
+end
+
 -- 2. A non-convex object (an L swept 1 along y) keeps its faces: volume 3,
 -- centroid (5/6, 1/2, 5/6); an o line followed by a g line of the same
 -- object makes one block.
