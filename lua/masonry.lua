@@ -176,6 +176,12 @@ return function(M, fields)
     end
     return box, base
   end
+  -- the blocks, and the base where there is one (no nil printed after them
+  -- at the prompt where base = false)
+  local function with_base(blocks, base)
+    if base then return blocks, base end
+    return blocks
+  end
 
   function M.facade(t)
     check("facade", t, { length = true, returns = true, courses = true, unit = true, density = true,
@@ -220,7 +226,7 @@ return function(M, fields)
         front(0.5, n - 1, th / L)
       end
     end
-    return report.blocks(blocks), base_slab({ W + 2 * th, D + 2 * th, H }, { W / 2, D / 2, -H })
+    return with_base(report.blocks(blocks), base_slab({ W + 2 * th, D + 2 * th, H }, { W / 2, D / 2, -H }))
   end
 
   function M.corner(t)
@@ -255,7 +261,7 @@ return function(M, fields)
       end
     end
     local X, Y = n[1] * L, n[2] * L + th
-    return report.blocks(blocks), base_slab({ X + 2 * th, Y + 2 * th, H }, { X / 2, Y / 2, -H })
+    return with_base(report.blocks(blocks), base_slab({ X + 2 * th, Y + 2 * th, H }, { X / 2, Y / 2, -H }))
   end
 
   function M.pier(t)
@@ -280,7 +286,7 @@ return function(M, fields)
         blocks[#blocks + 1] = box { size = size, at = at, density = rho }
       end
     end
-    return report.blocks(blocks), base_slab({ 2 * a, 2 * b, H }, { 0, 0, -H })
+    return with_base(report.blocks(blocks), base_slab({ 2 * a, 2 * b, H }, { 0, 0, -H }))
   end
 
   function M.bond(t)
@@ -351,6 +357,6 @@ return function(M, fields)
                                       density = t.density }
       end
     end
-    return report.blocks(blocks), base_slab({ (n + 1) * L, (k + 1) * L, H }, { n * L / 2, k * L / 2, -H })
+    return with_base(report.blocks(blocks), base_slab({ (n + 1) * L, (k + 1) * L, H }, { n * L / 2, k * L / 2, -H }))
   end
 end

@@ -143,7 +143,7 @@ return function(M)
         blocks[#blocks + 1] = M.block { points = pts, density = t.density }
       end
     end
-    if t.base == false then return report.blocks(blocks), nil end -- it stands on the user's blocks
+    if t.base == false then return report.blocks(blocks) end -- it stands on the user's blocks
     local base = M.box { size = { 2 * ro + 2 * th, 2 * ro + 2 * th, th }, at = { c[1], c[2], c[3] - th },
                          support = true }
     return report.blocks(blocks), base

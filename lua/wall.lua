@@ -98,11 +98,9 @@ return function(M)
         x = x + math.abs(v)
       end
     end
-    local base
-    if t.base ~= false then
-      base = make({ { x0, y0 - H }, { x0 + width * L, y0 - H }, { x0 + width * L, y0 }, { x0, y0 } },
-                  { support = true })
-    end
+    if t.base == false then return report.blocks(blocks) end -- (no nil after them at the prompt)
+    local base = make({ { x0, y0 - H }, { x0 + width * L, y0 - H }, { x0 + width * L, y0 }, { x0, y0 } },
+                      { support = true })
     return report.blocks(blocks), base
   end
 end
