@@ -806,6 +806,19 @@ static void arrow_head(cairo_t *cr, bl_vec2 tip, bl_vec2 d, double head)
     cairo_fill(cr);
 }
 
+/* An arrow from tail to tip, along the unit d (canvas): its shaft to its
+ * head's base, and the head. */
+static void arrow(cairo_t *cr, bl_vec2 tail, bl_vec2 tip, bl_vec2 d, double head)
+{
+    bl_vec2 base = bl_v2_sub(tip, bl_v2_scale(d, 2.0 * head));
+    cairo_new_path(cr);
+    cairo_move_to(cr, tail.x, tail.y);
+    cairo_line_to(cr, base.x, base.y);
+    cairo_set_line_width(cr, 0.5 * head);
+    cairo_stroke(cr);
+    arrow_head(cr, tip, d, head);
+}
+
 /* A couple at the canvas point at, as its sense is seen: three quarters of
  * a circle of radius r around it, ending in a head (anticlockwise as seen
  * where ccw; on the canvas y runs down, so that is decreasing angle). */
@@ -843,13 +856,8 @@ static void couple(cairo_t *cr, const pic *P, const bl_point_load *pl, bl_vec2 p
         couple_arc(cr, at, (pl->live ? 0.45 : 0.3) * len, head, towards > 0.0);
         return;
     }
-    bl_vec2 d = bl_v2_scale(in, 1.0 / bl_v2_norm(in)), tail = bl_v2_sub(at, bl_v2_scale(d, len));
-    cairo_new_path(cr);
-    cairo_move_to(cr, tail.x, tail.y);
-    cairo_line_to(cr, at.x, at.y);
-    cairo_set_line_width(cr, 0.5 * head);
-    cairo_stroke(cr);
-    arrow_head(cr, at, d, head);
+    bl_vec2 d = bl_v2_scale(in, 1.0 / bl_v2_norm(in));
+    arrow(cr, bl_v2_sub(at, bl_v2_scale(d, len)), at, d, head);
     arrow_head(cr, bl_v2_sub(at, bl_v2_scale(d, 2.0 * head)), d, head);
 }
 
@@ -877,13 +885,7 @@ static void load_arrows(cairo_t *cr, const pic *P)
         if (d.y > 0.0) fit = fmin(fit, at.y / d.y);
         if (d.y < 0.0) fit = fmin(fit, (at.y - P->h) / d.y);
         fit = fmax(fit, 3.0 * head);
-        bl_vec2 tail = bl_v2_sub(at, bl_v2_scale(d, fit)), base = bl_v2_sub(at, bl_v2_scale(d, 2.0 * head));
-        cairo_new_path(cr);
-        cairo_move_to(cr, tail.x, tail.y);
-        cairo_line_to(cr, base.x, base.y);
-        cairo_set_line_width(cr, 0.5 * head);
-        cairo_stroke(cr);
-        arrow_head(cr, at, d, head);
+        arrow(cr, bl_v2_sub(at, bl_v2_scale(d, fit)), at, d, head);
     }
 }
 
