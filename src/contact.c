@@ -125,6 +125,30 @@ static double depth_at(const bl_block *B, int dim, bl_vec3 q)
     return dim == 3 ? bl_polyhedron_depth(&B->solid, q) : bl_polygon_depth(B->v, B->nv, bl_v2(q.x, q.y));
 }
 
+/* The angle in degrees between the unit normal nu (either way) and the
+ * outward normal of the face (2D: edge) of block B whose plane q lies
+ * farthest beyond: near 90 for a point past the block's side, small for
+ * a point off a face the joint tilts from. */
+static double tilt_at(const bl_block *B, int dim, bl_vec3 q, bl_vec3 nu)
+{
+    double far = -INFINITY, c = 0.0;
+    int nf = dim == 3 ? B->solid.nf : B->nv;
+    for (int k = 0; k < nf; k++) {
+        bl_vec3 n, v0;
+        if (dim == 3) {
+            n = bl_polyhedron_face_normal(&B->solid, k, NULL);
+            v0 = B->solid.v[B->solid.fi[B->solid.fs[k]]];
+        } else { /* counter-clockwise: the outward normal is the edge turned right */
+            bl_vec2 a = B->v[k], b = B->v[(k + 1) % B->nv];
+            n = bl_v3_unit(bl_v3(b.y - a.y, a.x - b.x, 0.0));
+            v0 = bl_v3(a.x, a.y, 0.0);
+        }
+        double h = bl_v3_dot(n, bl_v3_sub(q, v0));
+        if (h > far) far = h, c = fabs(bl_v3_dot(n, nu));
+    }
+    return acos(fmin(c, 1.0)) * 180.0 / M_PI;
+}
+
 /* How well the side of a joint's plane through mid that the unit normal n
  * points to holds block b, and the other side block a: the depths (inside
  * positive) of probes a small step either side of mid.  The normal of a
@@ -257,6 +281,15 @@ int bl_joint_check(const bl_model *m, const bl_joint_spec *s, bl_error *err)
                  * wider each side) is not */
                 double back = fmax(depth_at(blk[j], m->dim, bl_v3_add(q, bl_v3_scale(nu, -d))),
                                    depth_at(blk[j], m->dim, bl_v3_sub(q, bl_v3_scale(nu, -d))));
+                double tilt = tilt_at(blk[j], m->dim, q, nu);
+                if (back < -fmax(tol, 1e-3 * -d) && tilt < 45.0)
+                    return bl_error_set(err,
+                                        "interface: point %d of field 'points' lies %.3g outside "
+                                        "block %d, and the joint%s %.2g degrees from the block's "
+                                        "%s there; a declared joint must lie on the %s of both blocks",
+                                        i + 1, -d, (j ? s->b : s->a) + 1,
+                                        m->dim == 3 ? "'s plane tilts" : " tilts", tilt,
+                                        m->dim == 3 ? "face" : "edge", m->dim == 3 ? "faces" : "edges");
                 if (back < -fmax(tol, 1e-3 * -d))
                     return bl_error_set(err,
                                         "interface: point %d of field 'points' lies %.3g beyond the "

@@ -63,6 +63,9 @@ local bad = {
     "blocks 1 and 3 share no interface" },
   { "interface", function() interface { 1, 2, points = { { -0.5, 0 }, { 1, 0 } } } end,
     "interface", "point 1 of field 'points' lies 0.5 beyond the edges of block 1", "wider than the blocks" },
+  { "interface", function() interface { 1, 2, points = { { 0, 0 }, { 1, 0.05 } } } end, -- atan(0.05) = 2.86 deg
+    "interface", "point 2 of field 'points' lies 0.05 outside block 2, and the joint tilts 2.9 degrees",
+    "on the edges of both blocks" },
   { "interface", function() interface { 1, 2, points = { { 0, 0.5 }, { 1, 0.5 } } } end,
     "interface", "point 1 of field 'points' lies 0.5 outside block 2" },
   { "interface", function() interface { 1, 2, points = { { 0, 5 }, { 1, 5 } } } end,

@@ -462,6 +462,15 @@ for _, case in ipairs {
   T.raises(function() interface { 1, 2, points = case[1] } end, "3D joint by hand off the blocks: " .. case[2],
            "interface: point 1 of field 'points' lies " .. case[2], case[3])
 end
+-- one tilted by atan(0.05 / 0.5) = 5.71 degrees from the slab's top face
+-- is said to tilt, not to be too wide
+for _, case in ipairs {
+  { { { -0.25, -0.25, 0 }, { 0.25, -0.25, 0.05 }, { 0.25, 0.25, 0.05 }, { -0.25, 0.25, 0 } },
+    "0.05 outside block 1, and the joint's plane tilts 5.7 degrees from the block's face" },
+} do
+  T.raises(function() interface { 1, 2, points = case[1] } end, "3D joint by hand tilted: " .. case[2],
+           "interface: point 2 of field 'points' lies " .. case[2], "on the faces of both blocks")
+end
 T.near(solve { flow = "associative" }.alpha, 0.5, 1e-8, "3D joints refused: the model is as it was")
 T.raises(function() load { live = { block = 2, at = { 9, 9, 9 }, force = { 1, 0, 0 } } } end,
          "3D point load outside its block", "load live: field 'at' (9, 9, 9) is outside block 2")
