@@ -46,19 +46,21 @@ return function(M, check_solve)
     return table.concat(parts, " ")
   end
 
-  -- Whether a row of this method (and flow) takes the common field k: a
-  -- method that solves one flow rule takes no other flow, only Ipopt takes
-  -- its start and penalty, and a row of the associative flow none of the
-  -- sequence's settings, nor a cold start of Ipopt, which runs no sequence
-  -- (solve{} refuses each of them).
+  -- Whether a row of this method (flow, start and complementarity) takes
+  -- the common field k: a method that solves one flow rule takes no other
+  -- flow, only Ipopt takes its start and penalty (not with the relaxation,
+  -- which bounds the products instead), and a row of the associative flow
+  -- none of the sequence's settings, nor an Ipopt started cold or from the
+  -- associative LP, which runs no sequence (solve{} refuses each of them).
   local seq_only = { starts = true, seed = true, nearest = true, path = true, beta = true, settle = true,
                      slip = true, lps = true, mechanisms = true }
   local mpec_only = { start = true, penalty = true, complementarity = true }
-  local function takes(method, flow, start, k)
+  local function takes(method, flow, start, comp, k)
     if k == "flow" then return method ~= "assoc" and method ~= "seqlp" end
+    if k == "penalty" and comp == "relaxation" then return false end
     if mpec_only[k] then return method == "mpec" end
-    -- a cold start runs no sequence (slip still judges Ipopt's answer)
-    if method == "mpec" and start == "cold" and seq_only[k] and k ~= "slip" then return false end
+    -- no sequence runs (slip still judges Ipopt's answer)
+    if method == "mpec" and start and start ~= "seqlp" and seq_only[k] and k ~= "slip" then return false end
     -- the flow the row solves: its method's own, else the one given
     if method == "assoc" then flow = "associative" elseif method == "seqlp" then flow = "nonassociative" end
     if seq_only[k] then return flow ~= "associative" end
@@ -103,7 +105,7 @@ return function(M, check_solve)
     -- every row's fields, each checked as its solve would check them
     -- before any row is solved (a mistake in the last row would otherwise
     -- show only after the others had run)
-    local plans = {}
+    local plans, taken = {}, {}
     for i, entry in ipairs(methods) do
       local fields = {}
       if type(entry) == "string" then
@@ -119,8 +121,10 @@ return function(M, check_solve)
         fail(("methods[%d] must be a method name or a table, got %s"):format(i, type(entry)))
       end
       for k, v in pairs(common) do
-        if fields[k] == nil and takes(fields.method, fields.flow or common.flow, fields.start or common.start, k) then
+        if fields[k] == nil and takes(fields.method, fields.flow or common.flow, fields.start or common.start,
+                                      fields.complementarity or common.complementarity, k) then
           fields[k] = v
+          taken[k] = true
         end
       end
       if fields.method == "assoc" and fields.flow == nil then fields.flow = "associative" end
@@ -135,6 +139,12 @@ return function(M, check_solve)
         fail(("methods[%d] (%s): %s"):format(i, label_of(entry), tostring(why)))
       end
       plans[i] = fields
+    end
+    -- a field that no row takes would do nothing (nor be checked)
+    for k in pairs(common) do
+      if not taken[k] then
+        fail(("field '%s' goes with none of the rows' methods (solve{} refuses it with each)"):format(k))
+      end
     end
 
     local rows = {}

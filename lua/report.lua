@@ -101,7 +101,8 @@ function Result.__tostring(r)
       say("  all%s; its first fixed LP has no friction", last)
     else
       say("  associative alpha = %.6g%s; %d LPs in all%s", r.alpha_assoc,
-          r.certified and "" or " (an upper bound on the non-associative one)", r.lps, last)
+          not r.assoc_verified and " (NOT verified)" or r.certified and ""
+          or " (an upper bound on the non-associative one)", r.lps, last)
     end
     local from_zero = r.certified and r.alpha == 0 and r.stands -- (doc/theory.md 6, "alpha from zero")
     if from_zero then
@@ -281,14 +282,33 @@ function Result.__tostring(r)
     say("  complementarity by %s, started from %s%s; sum of products %s", i.complementarity,
         i.start, #why > 0 and " (" .. table.concat(why, "; ") .. ")" or "", g(i.pairs))
     if r.alpha_assoc and math.abs(r.alpha_assoc) < math.huge then
-      say("  associative alpha = %.6g", r.alpha_assoc)
+      say("  associative alpha = %.6g%s", r.alpha_assoc, r.assoc_verified and "" or " (NOT verified)")
     end
     if i.kept_start and (i.status == "solved" or i.status == "solved to acceptable level") then
-      say("  Ipopt's point (alpha %.6g) is not a lower verified answer: the start's certified", i.alpha)
-      say("  answer stands")
+      -- why: the residuals above the tolerance (r.ipopt.residuals), or none
+      local over = {}
+      for _, k in ipairs { "equilibrium", "yield", "admissibility", "normalization", "complementarity",
+                           "work", "flow", "dilatancy" } do
+        local v = i.residuals and i.residuals[k]
+        if v and not (v <= r.tolerance) then over[#over + 1] = ("%s %s"):format(k, g(v)) end
+      end
+      say("  Ipopt's point (alpha %.6g) is not a lower verified answer: the start's%s", i.alpha,
+          r.certified and " certified" or "")
+      if #over > 0 then
+        say("  answer stands; Ipopt's point misses the tolerance by its residuals (r.ipopt.residuals)")
+        say("    %s", table.concat(over, ", "))
+      else
+        say("  answer stands (Ipopt's point passes the checks, but lies higher)")
+      end
     elseif i.kept_start then
-      say("  Ipopt stopped (%s) at alpha %.6g, not a verified answer: the start's answer stands",
-          i.status, i.alpha)
+      say("  Ipopt stopped (%s) at alpha %.6g, not a lower verified answer: the start's", i.status, i.alpha)
+      say("  answer stands")
+    elseif r.verified and i.status ~= "solved" and i.status ~= "solved to acceptable level" then
+      say("  (Ipopt gave up, but its last point passes every check below: it is the answer)")
+    elseif r.status == "not complementary" and r.flow == "nonassociative" and r.rigid_joints then
+      say("  (the program holds rigid joints' slip at zero and lets shear cross one that opens,")
+      say("  which the non-associative flow forbids: start = \"seqlp\" gives the sequence's")
+      say("  answer, which models them; doc/theory.md 6.1)")
     end
   elseif r.method == "seqlp" and r.lps > 1 then -- (iterations summed over r.lps LPs)
     say("  %s flow, seqlp method, %s LP: %d iterations over the %d LPs", r.flow, r.lp, r.iterations, r.lps)

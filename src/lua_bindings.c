@@ -1029,6 +1029,22 @@ static int model_block_info(lua_State *L)
 
 static void push_details(lua_State *L, const bl_solution *s);
 
+/* A table of the residuals (the flow rule's where they were checked). */
+static void push_residuals(lua_State *L, const bl_residuals *r)
+{
+    lua_createtable(L, 0, 8);
+    set_number(L, "equilibrium", r->equilibrium);
+    set_number(L, "yield", r->yield);
+    set_number(L, "admissibility", r->admissibility);
+    set_number(L, "complementarity", r->complementarity);
+    set_number(L, "normalization", r->normalization);
+    set_number(L, "work", r->work);
+    if (!isnan(r->flow)) {
+        set_number(L, "flow", r->flow);
+        set_number(L, "dilatancy", r->dilatancy);
+    }
+}
+
 /* Into the table on the top, where the solve was given mechanisms to try
  * (solve{ mechanisms }): how many were tried and how many certified. */
 static void set_mechanisms_given(lua_State *L, const bl_solution *s)
@@ -1104,8 +1120,10 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
             break;
         }
     int seq = strcmp(s->method, "seqlp") == 0, ipopt = strcmp(s->method, "mpec") == 0;
-    if (seq || (ipopt && strcmp(s->flow, "nonassociative") == 0))
+    if (seq || (ipopt && strcmp(s->flow, "nonassociative") == 0)) {
         set_number(L, "alpha_assoc", s->alpha_assoc);
+        set_boolean(L, "assoc_verified", s->assoc_verified);
+    }
     if (seq || ipopt) {
         set_boolean(L, "certified", s->certified);
         set_boolean(L, "interrupted", s->interrupted);
@@ -1181,6 +1199,10 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
         set_number(L, "pairs", s->pair_sum);
         set_number(L, "alpha", s->alpha_ipopt);
         set_boolean(L, "kept_start", s->kept_start);
+        if (s->kept_start) { /* (else they are the answer's) */
+            push_residuals(L, &s->res_ipopt);
+            lua_setfield(L, -2, "residuals");
+        }
         if (s->given) set_integer(L, "start_mechanism", s->given); /* the start's answer: seqlp's from_mechanism */
         set_mechanisms_given(L, s);
         lua_setfield(L, -2, "ipopt");
@@ -1217,17 +1239,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
     lua_setfield(L, -2, "timings");
 
     if (!s->has_mechanism) return;
-    lua_createtable(L, 0, 6);
-    set_number(L, "equilibrium", s->res.equilibrium);
-    set_number(L, "yield", s->res.yield);
-    set_number(L, "admissibility", s->res.admissibility);
-    set_number(L, "complementarity", s->res.complementarity);
-    set_number(L, "normalization", s->res.normalization);
-    set_number(L, "work", s->res.work);
-    if (!isnan(s->res.flow)) {
-        set_number(L, "flow", s->res.flow);
-        set_number(L, "dilatancy", s->res.dilatancy);
-    }
+    push_residuals(L, &s->res);
     lua_setfield(L, -2, "residuals");
     if (!isnan(s->res.below)) { /* not residuals: the motions either side of the slip threshold */
         lua_createtable(L, 0, 2);
@@ -1447,6 +1459,9 @@ static int solve_or_check(lua_State *L, int check)
     mo.start = (bl_mpec_start)choice_field(L, 2, "solve", "start", starts_from,
                                            flow ? BL_MPEC_START_SEQLP : BL_MPEC_START_ASSOC);
     mo.penalty = number_field(L, 2, "solve", "penalty", mo.penalty, POSITIVE);
+    if (mo.comp == BL_MPEC_RELAXATION && field_given(L, 2, "penalty"))
+        fail(L, "solve: field 'penalty' goes with complementarity = \"penalty\" or \"homotopy\"; "
+                "\"relaxation\" bounds the products instead");
     bl_seqlp_options so;
     bl_seqlp_options_default(&so);
     so.beta = number_field(L, 2, "solve", "beta", so.beta, POSITIVE);
@@ -1490,15 +1505,18 @@ static int solve_or_check(lua_State *L, int check)
                  seq_given[0] ? ", " : "", seq[k]);
         if (!flow && mo.start != BL_MPEC_START_SEQLP)
             fail(L, "solve: field '%s' goes with flow = \"nonassociative\" (the sequence of LPs)", seq[k]);
-        if (method == MPEC && mo.start == BL_MPEC_START_COLD && strcmp(seq[k], "slip") != 0)
-            fail(L, "solve: field '%s' goes with the sequence of LPs, which start = \"cold\" does not run",
-                 seq[k]);
+        if (method == MPEC && mo.start != BL_MPEC_START_SEQLP && strcmp(seq[k], "slip") != 0)
+            fail(L, "solve: field '%s' goes with the sequence of LPs, which start = \"%s\" does not run",
+                 seq[k], starts_from[mo.start]);
     }
     if (field(L, 2, "mechanisms")) mechanisms_field(L, m, &so); /* (stays on the stack) */
     int lp = choice_field(L, 2, "solve", "lp", lps, 0);
     bl_solve_options o;
     bl_solve_options_default(&o);
     o.tolerance = number_field(L, 2, "solve", "tolerance", o.tolerance, POSITIVE);
+    if (o.tolerance > 1e-2) /* (at 1, alpha = 1.65e-10 passed as W4's associative answer) */
+        fail(L, "solve: field 'tolerance' must be at most 0.01 (the largest scaled residual of a "
+                "verified answer), got %g", o.tolerance);
     o.verbose = boolean_field(L, 2, "solve", "verbose", 0);
     o.lp = lp == 0 ? BL_LP_AUTO : lp == 1 ? BL_LP_SIMPLEX : BL_LP_IPM;
     if (field(L, 2, "mps")) {
@@ -1513,11 +1531,11 @@ static int solve_or_check(lua_State *L, int check)
     o.deadline = seconds > 0 ? bl_clock() + seconds : 0;
     double iters = number_field(L, 2, "solve", "iterations", 0, POSITIVE);
     if (iters != floor(iters) || iters > 1e9)
-        fail(L, "solve: field 'iterations' must be a positive integer, got %g", iters);
+        fail(L, "solve: field 'iterations' must be an integer from 1 to 1000000000, got %g", iters);
     o.iterations = (int)iters;
     double threads = number_field(L, 2, "solve", "threads", 0, POSITIVE);
     if (threads != floor(threads) || threads > 1024)
-        fail(L, "solve: field 'threads' must be a positive integer, got %g", threads);
+        fail(L, "solve: field 'threads' must be an integer from 1 to 1024, got %g", threads);
     o.threads = (int)threads;
     if (field(L, 2, "cone")) {
         static const char *const cone_fields[] = {"facets", "kind", NULL};

@@ -486,9 +486,9 @@ static Bool intermediate(Index mode, Index iter, Number obj, Number inf_pr, Numb
                          Index ls, UserDataPtr ud)
 {
     (void)mode, (void)obj, (void)inf_pr, (void)inf_du, (void)mu, (void)d_norm, (void)reg;
-    (void)alpha_du, (void)alpha_pr, (void)ls, (void)iter;
+    (void)alpha_du, (void)alpha_pr, (void)ls;
     nlp *p = ud;
-    p->iterations++;
+    if (iter > 0) p->iterations++; /* (iteration 0 is the start, as Ipopt counts) */
     if (p->deadline > 0 && bl_clock() > p->deadline) p->late = 1;
     return !bl_interrupt_pending() && !p->late;
 }
@@ -731,7 +731,10 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     int cold = o->start == BL_MPEC_START_COLD;
     /* the associative answer beside the non-associative one: the
      * sequence's, or the associative start's own (a cold start's too) */
-    if (strcmp(start_kind, "seqlp") != 0) s->alpha_assoc = s->alpha;
+    if (strcmp(start_kind, "seqlp") != 0) {
+        s->alpha_assoc = s->alpha;
+        s->assoc_verified = s->verified;
+    }
     /* Ctrl-C during the start: its result is the answer, as the start's
      * (a sequence stopped by it keeps what it certified, and says so) */
     if (s->status == BL_INTERRUPTED || s->interrupted) {
@@ -836,11 +839,21 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     if (!xa) goto oom;
     answer_from(s, v, &l, c, f, nonassoc, o, xa);
     int converged = s->status == BL_OPTIMAL || s->status == BL_UNSTABLE;
+    /* Ipopt's own failures do not make its point wrong: one that passes
+     * every check is an answer (a pier cold ended "restoration failed"
+     * after 1,195 iterations at b/h, every residual at round-off); its
+     * limits and Ctrl-C stay statuses */
+    if (!converged && s->verified && s->status != BL_ITERATION_LIMIT && s->status != BL_TIME_LIMIT &&
+        s->status != BL_INTERRUPTED) {
+        converged = 1;
+        bl_solution_answer_status(s);
+    }
     if (!converged) s->verified = 0;
     else if (!s->verified) s->status = BL_NOT_COMPLEMENTARY;
     /* (where the dead load alone stands, an alpha below 0 is no answer for
      * a live load applied from zero, as in the sequence's certificates:
      * Ipopt went to -0.052 on a wall that stands, and called it unstable) */
+    s->res_ipopt = s->res;
     if (v0 && converged && (!s->verified || s->alpha > alpha_start || (stands == 1 && s->alpha < 0.0))) {
         answer_from(s, v0, &l, c, f, nonassoc, o, xa);
         s->kept_start = 1;

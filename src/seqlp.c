@@ -1436,6 +1436,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
         }
     }
     s->time.detection += detection;
+    s->assoc_verified = s->verified; /* (a loose lp_tolerance: an upper bound no longer) */
     /* the wall clock the dead-load check added: its own time where it ran
      * after the LP, little where it ran beside it (assoc.c) */
     double stands_wall = fmax(0.0, s->time.total - s->time.detection + detection - s->time.assembly -

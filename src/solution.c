@@ -33,7 +33,7 @@ static const char *const status_sentences[] = {
                               "no answer",
     [BL_RESTORATION_FAILED] = "Ipopt's restoration phase failed to regain feasibility; no answer",
     [BL_NOT_COMPLEMENTARY] = "Ipopt converged to a point the residuals reject (complementarity or "
-                             "flow rule not met): a stationary point of the penalty, not an answer",
+                             "flow rule not met): not an answer",
 };
 
 const char *bl_status_name(bl_status s) { return status_names[s]; }

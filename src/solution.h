@@ -120,6 +120,7 @@ typedef struct bl_solution {
     const char *method;      /* "assoc" or "seqlp", static */
     const char *flow;        /* "associative" or "nonassociative", static */
     double alpha_assoc;      /* the associative multiplier */
+    int assoc_verified;      /* ... passed its own checks */
     double alpha_rigid;      /* ... with unlimited friction (INFINITY: unbounded) */
     double alpha_settled;    /* the alpha of the LP whose mechanism the answer's
                                 certificate holds (the answer is at or below it) */
@@ -159,6 +160,7 @@ typedef struct bl_solution {
     const char *start_why;   /* why from there, when not as asked; or NULL */
     double pair_sum;         /* sum of the complementary products at the end */
     double alpha_ipopt;      /* alpha of Ipopt's last point */
+    bl_residuals res_ipopt;  /* ... its residuals, where the start was kept */
     int kept_start;          /* Ipopt's point was not a lower verified answer than
                                 the certified start, which is the answer */
 } bl_solution;

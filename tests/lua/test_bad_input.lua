@@ -194,6 +194,20 @@ local bad = {
   -- ignored); slip, which judges Ipopt's answer, is taken
   { "solve", function() solve { method = "mpec", start = "cold", seed = 3 } end, "solve",
     "field 'seed' goes with the sequence of LPs, which start = \"cold\" does not run" },
+  -- and with its start from the associative LP, which runs none either
+  { "solve", function() solve { method = "mpec", start = "assoc", starts = 200 } end, "solve",
+    "field 'starts' goes with the sequence of LPs, which start = \"assoc\" does not run" },
+  -- the penalty with the relaxation, which does not use it
+  { "solve", function() solve { method = "mpec", complementarity = "relaxation", penalty = 5 } end, "solve",
+    "field 'penalty' goes with complementarity = \"penalty\" or \"homotopy\"" },
+  -- a tolerance so loose that "verified" means nothing (at 1, alpha =
+  -- 1.65e-10 passed as W4's associative answer)
+  { "solve", function() solve { tolerance = 1 } end, "solve", "field 'tolerance' must be at most 0.01" },
+  { "solve", function() solve { iterations = 2 ^ 31 - 1 } end, "solve",
+    "field 'iterations' must be an integer from 1 to 1000000000, got 2.14748e+09" },
+  -- a field of compare{} that no row takes (it was not even checked)
+  { "compare", function() compare { methods = { "assoc" }, penalty = -1 } end, "compare",
+    "field 'penalty' goes with none of the rows' methods" },
   { "arch", function() arch { n = 5, thickness = 0.1 } end, "arch", "'radius'" },
   { "arch", function() arch { n = 5, radius = 1, thickness = -0.1 } end, "arch", "'thickness'" },
   -- a string is no number, here as in every other field ("5" read as 5,
