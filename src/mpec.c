@@ -850,10 +850,10 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     }
     if (!converged) s->verified = 0;
     else if (!s->verified) s->status = BL_NOT_COMPLEMENTARY;
+    s->res_ipopt = s->res;
     /* (where the dead load alone stands, an alpha below 0 is no answer for
      * a live load applied from zero, as in the sequence's certificates:
      * Ipopt went to -0.052 on a wall that stands, and called it unstable) */
-    s->res_ipopt = s->res;
     if (v0 && converged && (!s->verified || s->alpha > alpha_start || (stands == 1 && s->alpha < 0.0))) {
         answer_from(s, v0, &l, c, f, nonassoc, o, xa);
         s->kept_start = 1;
