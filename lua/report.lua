@@ -115,8 +115,9 @@ function Result.__tostring(r)
       say("  alpha %.6g, products %s, %.3f s", r.path.alpha, g(r.path.products), r.path.time)
     elseif r.path and r.path.stopped then
       say("  the path of the non-associative problem was stopped (Ctrl-C or the time limit) after")
-      say("  %d Newton steps (products %s, %.3f s), before any start", r.path.steps, g(r.path.products),
-          r.path.time)
+      say("  %d Newton steps (products %s, %.3f s); the first start, from the associative forces,",
+          r.path.steps, g(r.path.products), r.path.time)
+      say("  stopped with it")
     elseif r.path then
       say("  the path of the non-associative problem stopped short: products %s after %d Newton",
           g(r.path.products), r.path.steps)
@@ -214,6 +215,10 @@ function Result.__tostring(r)
       say("  and 40 more restarts %s; where so many differ, lower ones may remain: starts = K",
           (r.interrupted or r.time_up) and "were planned" or "followed")
       say("  and other seeds look further)")
+    end
+    if (r.skipped or 0) > 0 then
+      say("  (%d restart%s skipped: no random stress state could be drawn at %s alpha, r.skipped)", r.skipped,
+          plural(r.skipped), r.skipped == 1 and "its" or "their")
     end
     local lower = 0 -- starts whose search capped the friction (the certificates did not)
     for _, st in ipairs(r.starts) do lower = lower + (st.search_mu and 1 or 0) end

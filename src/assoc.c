@@ -295,7 +295,7 @@ int bl_assoc_solve(bl_model *m, const bl_solve_options *o, bl_solution **out, bl
          * which can leave a residual just above the verification's (a
          * façade of 457 blocks at mu = 3: admissibility 1.2e-7): once,
          * from its basis, 100 times tighter (1e-11 for CLP's 1e-9; the
-         * dead-load check goes on with them) */
+         * dead-load check goes on with them), unscaled (lp_clp.cpp) */
         bl_residuals r0;
         const double *x = bl_lp_primal(lp), *y = bl_lp_dual(lp);
         if (!bl_verify(sys, x[sys->nforce], x, y, o->tolerance, &r0) && bl_lp_tighten(lp, 1e-2) == 0) {

@@ -164,7 +164,7 @@ static double side_score(const bl_model *m, int a, int b, bl_vec3 mid, bl_vec3 n
 }
 
 /* A 3D joint declared by hand: its polygon, the normal from a into b (the
- * side that holds b, side_score), the frame along its first edge, and its
+ * side that holds b, side_score), the frame along its longest edge, and its
  * area. */
 static int add_joint3(bl_model *m, const bl_joint_spec *s, bl_error *err)
 {
@@ -184,8 +184,9 @@ static int add_joint3(bl_model *m, const bl_joint_spec *s, bl_error *err)
     for (int i = 0; i < k.np; i++) mid = bl_v3_add(mid, bl_v3_scale(k.poly[i], 1.0 / k.np));
     if (side_score(m, s->a, s->b, mid, bl_v3_scale(k.n3, -1.0)) > side_score(m, s->a, s->b, mid, k.n3))
         k.n3 = bl_v3_scale(k.n3, -1.0);
-    bl_vec3 e = bl_v3_sub(k.poly[1], k.poly[0]);
-    k.t2 = bl_v3_scale(e, 1.0 / bl_v3_norm(e));
+    bl_vec3 e[BL_JOINT_POINTS];
+    for (int i = 0; i < k.np; i++) e[i] = bl_v3_sub(k.poly[(i + 1) % k.np], k.poly[i]);
+    k.t2 = bl_longest_direction(e, k.np); /* as a detected joint's: either way round, the same */
     k.t3 = bl_v3_cross(k.n3, k.t2);
     k.mu = s->has_mu ? s->mu : m->mu;
     k.cohesion = s->has_cohesion ? s->cohesion : m->cohesion;

@@ -50,6 +50,7 @@ struct clp_lp {
     bool solved = false;
     bool objective_changed = false; // the next solve: primal, from the basis
     bool feasibility = false;       // no objective: the dual simplex from the start
+    bool unscaled = false;          // the next solve: primal, from the basis, unscaled
     std::vector<double> x, y, ray;
     int iterations = 0;
     bool late = false; // the last solve stopped at the deadline
@@ -142,7 +143,13 @@ static bl_lp_status solve(void *e)
         // the dual simplex needs no first phase: 1,230 rows, 0.31 s against
         // 0.73 s where the check holds, 1.4 s against 5.9 s where it fails
         // (doc/theory.md 8).
-        if ((lp->solved || lp->feasibility) && !lp->objective_changed) lp->model.dual(0);
+        if (lp->unscaled) {
+            int scaling = lp->model.scalingFlag();
+            lp->model.scaling(0);
+            lp->model.primal(1);
+            lp->model.scaling(scaling);
+            lp->unscaled = false;
+        } else if ((lp->solved || lp->feasibility) && !lp->objective_changed) lp->model.dual(0);
         else lp->model.primal(0);
         lp->objective_changed = false;
         lp->solved = true;
@@ -192,14 +199,17 @@ static bl_lp_status solve(void *e)
     }
 }
 
-// Tighter tolerances, and the primal simplex from the basis next: the
-// reduced costs it left within the old tolerance may now price in.
+// Tighter tolerances, and the primal simplex from the basis next, on the
+// unscaled problem: the reduced costs it left within the old tolerance may
+// now price in (scaled, they need not: a wall of 1,406 blocks kept an
+// admissibility of 1.4e-6 at 1e-11, and met 4e-9 unscaled in 26 pivots).
 static void tighten(void *e, double factor)
 {
     clp_lp *lp = static_cast<clp_lp *>(e);
     lp->model.setPrimalTolerance(lp->model.primalTolerance() * factor);
     lp->model.setDualTolerance(lp->model.dualTolerance() * factor);
     lp->objective_changed = true;
+    lp->unscaled = true;
 }
 
 static const double *primal(const void *e) { return static_cast<const clp_lp *>(e)->x.data(); }

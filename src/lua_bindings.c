@@ -1139,6 +1139,7 @@ static void push_result(lua_State *L, const bl_solution *s, int sidx, int dead)
         set_boolean(L, "assoc_is_solution", s->assoc_is_solution);
         set_mechanisms_given(L, s);
         if (s->restarts_why) set_string(L, "restarts_why", s->restarts_why);
+        set_integer(L, "skipped", s->skipped);
         if (s->lp_switched) set_boolean(L, "lp_switched", 1);
         if (s->live_scales_dead) set_boolean(L, "live_scales_dead", 1);
         if (s->none_dilates) set_boolean(L, "none_dilates", 1);

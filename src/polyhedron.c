@@ -21,6 +21,27 @@ bl_vec3 bl_v3_unit(bl_vec3 a)
     return bl_v3_scale(a, 1.0 / bl_v3_norm(a));
 }
 
+bl_vec3 bl_longest_direction(const bl_vec3 *e, int n)
+{
+    double best = 0.0;
+    for (int i = 0; i < n; i++) best = fmax(best, bl_v3_norm(e[i]));
+    bl_vec3 along[2];
+    int k = 0;
+    for (int i = 0; i < n; i++) {
+        if (bl_v3_norm(e[i]) < (1.0 - 1e-9) * best) continue;
+        bl_vec3 u = bl_v3_scale(e[i], 1.0 / bl_v3_norm(e[i]));
+        int same = 0;
+        for (int c = 0; c < k; c++) same |= fabs(bl_v3_dot(u, along[c])) > 1.0 - 1e-9;
+        if (same) continue;
+        if (k == 2) return along[0];
+        along[k++] = u;
+    }
+    double c = k == 2 ? bl_v3_dot(along[0], along[1]) : 0.0;
+    if (fabs(c) < 1e-6) return along[0];
+    bl_vec3 s = bl_v3_add(along[0], bl_v3_scale(along[1], c > 0.0 ? 1.0 : -1.0));
+    return bl_v3_scale(s, 1.0 / bl_v3_norm(s));
+}
+
 int bl_polyhedron_make(bl_polyhedron *p, const bl_vec3 *v, int nv, const int *fs,
                        const int *fi, int nf)
 {

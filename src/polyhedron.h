@@ -26,6 +26,14 @@ static inline bl_vec3 bl_v3_cross(bl_vec3 a, bl_vec3 b)
 double bl_v3_norm(bl_vec3 a);
 /* A direction, as bl_v2_unit in 3D. */
 bl_vec3 bl_v3_unit(bl_vec3 a);
+/* The direction of a joint's frame from its boundary edges e[0..n-1]: the
+ * longest's; where the edges within 1e-9 of the longest lie along two
+ * directions at an acute angle (an isosceles trapezoid's legs), its
+ * bisector, which no round-off in their lengths turns; where they are
+ * square to each other (a square's sides, along which its pyramid's
+ * facets stay, as they do on a rectangle), or along three or more
+ * directions, the first's.  A unit vector. */
+bl_vec3 bl_longest_direction(const bl_vec3 *e, int n);
 
 typedef struct bl_polyhedron {
     int nv, nf;

@@ -922,7 +922,7 @@ static int one_start(run *r, const bl_seqlp_options *o, bl_solution *s, start_st
             fprintf(stderr, "seqlp start %d LP %d: alpha %.8g\n", start_number(s), j + 1, a);
         else if (o->progress && bl_clock() - r->t0 > 0.5) {
             char of[24] = "", low[40] = "";
-            if (r->planned > 1) snprintf(of, sizeof of, " of %d", r->planned);
+            if (r->planned - s->skipped > 1) snprintf(of, sizeof of, " of %d", r->planned - s->skipped);
             if (r->found) snprintf(low, sizeof low, ", lowest certified %.6g", r->best_alpha);
             fprintf(stderr, "\rseqlp: start %d%s, LP %d, alpha %.6g%s   ", start_number(s), of, j + 1, a,
                     low);
@@ -1676,6 +1676,7 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
             if (search_start(&r, o, s, &st, err)) goto fail;
             if (st != BL_LP_OPTIMAL) { /* as a random state that cannot be drawn */
                 if (st == BL_LP_INTERRUPTED || st == BL_LP_TIME_LIMIT) stop = st;
+                else s->skipped++;
                 continue;
             }
         } else {
@@ -1691,7 +1692,8 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                  * the interior point does not finish: the 10,050-block
                  * wall's, doc/seqlp.md 14) only skips this restart */
                 if (st == BL_LP_INTERRUPTED || st == BL_LP_TIME_LIMIT) stop = st;
-                else if (st != BL_LP_INFEASIBLE && !r.found)
+                else s->skipped++;
+                if (st != BL_LP_INTERRUPTED && st != BL_LP_TIME_LIMIT && st != BL_LP_INFEASIBLE && !r.found)
                     snprintf(s->note, sizeof s->note,
                              "restart %d: the LP of its random stress state ended with %s", k,
                              bl_status_name(bl_status_of_lp(st)));

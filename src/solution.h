@@ -131,6 +131,7 @@ typedef struct bl_solution {
                                 lowest alpha certified until then (seqlp.c) */
     int assoc_is_solution;   /* alpha_assoc = alpha_rigid: friction limits nothing */
     const char *restarts_why; /* why the default ran restarts (static), or NULL */
+    int skipped;             /* restarts skipped: no stress state could be drawn */
     int lp_switched;         /* the sequence's fixed LPs went to the other engine (lp) */
     int certified;           /* a certificate LP accepted (alpha, x, u) */
     int interrupted;         /* Ctrl-C ended the search early */
