@@ -19,7 +19,7 @@ return function(M, load_ratio)
   local allowed = { n = true, radius = true, span = true, thickness = true, angle = true,
                     centre = true, density = true, length = true, segments = true, fill = true,
                     springings = true }
-  local function fail(msg) error("arch: " .. msg, 3) end
+  local function fail(msg) error("arch: " .. msg, 0) end
   local function positive(t, k)
     local v = t[k]
     if type(v) ~= "number" or not (v > 0) or v == math.huge then

@@ -11,7 +11,7 @@ return function(core)
   -- when called with a dot (m.undo() for m:undo()).
   local function with_colon(m, name, args)
     if type(m) ~= "userdata" then
-      error(("%s: expects a model, got %s; call it with a colon: m:%s%s"):format(name, type(m), name, args), 3)
+      error(("%s: expects a model, got %s; call it with a colon: m:%s%s"):format(name, type(m), name, args), 0)
     end
   end
   -- Results get the report metatable: print(r), r:svg(file), r:png(file).
@@ -116,7 +116,7 @@ return function(core)
   local function none(name, n)
     if n > 0 then
       error(("%s: takes no arguments, got %d%s"):format(name, n, name == "undo" and
-        " (it takes back the last command that added blocks: call it again for more)" or ""), 3)
+        " (it takes back the last command that added blocks: call it again for more)" or ""), 0)
     end
   end
 
@@ -140,7 +140,7 @@ return function(core)
 
   local function need(fn)
     if not current then
-      error(fn .. ": no current model; start one with model{ mu = 0.65 }", 3)
+      error(fn .. ": no current model; start one with model{ mu = 0.65 }", 0)
     end
     return current
   end
@@ -158,7 +158,7 @@ return function(core)
   for _, name in ipairs { "block", "contacts", "interface", "load", "solve" } do
     M[name] = function(t, ...)
       if select("#", ...) > 0 then
-        error(("%s: takes one table of fields, got %d arguments"):format(name, 1 + select("#", ...)), 2)
+        error(("%s: takes one table of fields, got %d arguments"):format(name, 1 + select("#", ...)), 0)
       end
       return methods[name](need(name), t)
     end
@@ -185,7 +185,7 @@ return function(core)
     while #stack > 0 and stack[#stack] >= n do table.remove(stack) end
     if #stack == 0 then
       error("undo: no command has added blocks to this model since it was made (or since the last undo "
-            .. "took them all back)", 2)
+            .. "took them all back)", 0)
     end
     core.truncate(m, table.remove(stack))
     return m
@@ -221,7 +221,7 @@ return function(core)
     return function(...)
       if not current then
         error(name .. ": no current model; start one with model{ " .. (solid[name] and "dim = 3, " or "")
-              .. "mu = 0.65 }", 2)
+              .. "mu = 0.65 }", 0)
       end
       local m, before = current, core.blocks(current)
       local res = table.pack(pcall(f, ...))
@@ -244,7 +244,7 @@ return function(core)
       local f = rest:match("^field '([%w_]+)'")
       if f and type(t) == "table" and t[f] ~= nil then msg = rest end
       if msg:sub(1, #name + 1) ~= name .. ":" then msg = name .. ": " .. msg end
-      error(msg, 2)
+      error(msg, 0)
     end
   end
   for _, name in ipairs { "wall", "arch", "compare", "box", "extrude", "dome", "facade", "corner",

@@ -12,7 +12,7 @@ return function(M, check_solve)
   local Comparison = {}
   Comparison.__index = Comparison
 
-  local function fail(msg) error("compare: " .. msg, 3) end
+  local function fail(msg) error("compare: " .. msg, 0) end
 
   -- A block's velocity as (vx, vy, omega l) in 2D, (v, omega l) in 3D, l
   -- the typical block size, so that translation and rotation weigh alike.

@@ -80,7 +80,7 @@ local function one(name)
   end
   local names = {}
   for _, c in ipairs(COMMANDS) do names[#names + 1] = c[1] end
-  error(("help: no command '%s' (commands: %s)"):format(tostring(name), table.concat(names, ", ")), 3)
+  error(("help: no command '%s' (commands: %s)"):format(tostring(name), table.concat(names, ", ")), 0)
 end
 
 -- help and help() print the overview, help "solve" (or help(solve), the
@@ -95,7 +95,7 @@ function help.object(globals)
         for _, c in ipairs(COMMANDS) do
           if globals[c[1]] == what then found = c[1] break end
         end
-        if not found then error("help: that is not a blocklim command (help lists them)", 2) end
+        if not found then error("help: that is not a blocklim command (help lists them)", 0) end
         what = found
       end
       print(one(what))

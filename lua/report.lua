@@ -427,34 +427,34 @@ local function other_format(fmt, file)
   local ext = (file:match("%.(%w+)$") or ""):lower()
   if WRITTEN[ext] and ext ~= fmt then
     error(("%s: the file name '%s' ends in .%s, but this writes %s: use r:%s(file)")
-          :format(fmt, file, ext, fmt:upper(), ext), 3)
+          :format(fmt, file, ext, fmt:upper(), ext), 0)
   end
   if OTHER[ext] then
     error(("%s: the file name '%s' ends in .%s, but this writes %s: name it .%s (results are written "
-           .. "as png, svg, vtk and json)"):format(fmt, file, ext, fmt:upper(), fmt), 3)
+           .. "as png, svg, vtk and json)"):format(fmt, file, ext, fmt:upper(), fmt), 0)
   end
 end
 
 local function picture(fmt)
   return function(r, file, opts)
     if type(r) ~= "table" or r._solution == nil then
-      error(("%s: call it on a result with a colon: r:%s(file)"):format(fmt, fmt), 2)
+      error(("%s: call it on a result with a colon: r:%s(file)"):format(fmt, fmt), 0)
     end
     if type(file) ~= "string" then
-      error(("%s: expects a file name, got %s"):format(fmt, type(file)), 2)
+      error(("%s: expects a file name, got %s"):format(fmt, type(file)), 0)
     end
     other_format(fmt, file)
     local width, az, el
     if opts ~= nil then
-      if type(opts) ~= "table" then error(fmt .. ": options must be a table { width = ... }", 2) end
+      if type(opts) ~= "table" then error(fmt .. ": options must be a table { width = ... }", 0) end
       for k in pairs(opts) do
         if k ~= "width" and k ~= "view" then
-          error(("%s: unknown field '%s' (fields: width, view)"):format(fmt, k), 2)
+          error(("%s: unknown field '%s' (fields: width, view)"):format(fmt, k), 0)
         end
       end
       width = opts.width ~= nil and math.type(opts.width) and math.tointeger(opts.width) or opts.width
       if width ~= nil and (math.type(width) ~= "integer" or width < 100 or width > 20000) then
-        error(fmt .. ": field 'width' must be an integer from 100 to 20000", 2)
+        error(fmt .. ": field 'width' must be an integer from 100 to 20000", 0)
       end
       -- 3D: where from, {azimuth, elevation} in degrees or a named view
       local views = { front = { 0, 0 }, back = { 180, 0 }, left = { -90, 0 }, right = { 90, 0 },
@@ -465,7 +465,7 @@ local function picture(fmt)
       if opts.view ~= nil and (type(v) ~= "table" or #v ~= 2 or not finite(v[1]) or not finite(v[2])
                                or math.abs(v[2]) > 90) then
         error(fmt .. ": field 'view' must be {azimuth, elevation}, two finite numbers of degrees (elevation within " ..
-              "+-90) or one of \"front\", \"back\", \"left\", \"right\", \"top\"", 2)
+              "+-90) or one of \"front\", \"back\", \"left\", \"right\", \"top\"", 0)
       end
       if v then az, el = v[1], v[2] end
     end
@@ -478,8 +478,8 @@ Result.png = picture("png")
 
 -- r:vtk(file): a 3D result for ParaView (src/vtk.h says what it holds).
 function Result.vtk(r, file)
-  if type(r) ~= "table" or r._solution == nil then error("vtk: call it on a result with a colon: r:vtk(file)", 2) end
-  if type(file) ~= "string" then error(("vtk: expects a file name, got %s"):format(type(file)), 2) end
+  if type(r) ~= "table" or r._solution == nil then error("vtk: call it on a result with a colon: r:vtk(file)", 0) end
+  if type(file) ~= "string" then error(("vtk: expects a file name, got %s"):format(type(file)), 0) end
   other_format("vtk", file)
   report.vtk(r._solution, file)
 end
@@ -488,11 +488,11 @@ end
 -- lua-cjson: tables read raw, fields whose names begin with "_", functions
 -- and userdata left out, NaN and infinities null, numbers to 14 digits.
 function Result.json(r, file)
-  if type(r) ~= "table" or r._solution == nil then error("json: call it on a result with a colon: r:json(file)", 2) end
-  if type(file) ~= "string" then error(("json: expects a file name, got %s"):format(type(file)), 2) end
+  if type(r) ~= "table" or r._solution == nil then error("json: call it on a result with a colon: r:json(file)", 0) end
+  if type(file) ~= "string" then error(("json: expects a file name, got %s"):format(type(file)), 0) end
   other_format("json", file)
   local found, cjson = pcall(require, "cjson")
-  if not found then error("json: needs Lua's cjson module (the Debian package lua-cjson): " .. tostring(cjson), 2) end
+  if not found then error("json: needs Lua's cjson module (the Debian package lua-cjson): " .. tostring(cjson), 0) end
   local json = cjson.new()
   json.encode_number_precision(14) -- the most lua-cjson writes
   json.encode_invalid_numbers("null")
@@ -501,7 +501,7 @@ function Result.json(r, file)
     if type(v) == "function" or type(v) == "userdata" or type(v) == "thread" then return nil end
     if type(v) ~= "table" then return v end
     v = VELOCITY[v] or v -- (a mechanism entry's numbers)
-    if depth > 20 then error("json: the result nests more than 20 tables deep", 3) end
+    if depth > 20 then error("json: the result nests more than 20 tables deep", 0) end
     local out = {}
     for k, x in next, v do
       if not (type(k) == "string" and k:sub(1, 1) == "_") then out[k] = plain(x, depth + 1) end
@@ -511,7 +511,7 @@ function Result.json(r, file)
   local text = json.encode(plain(r, 0))
   local f, why = io.open(file, "w")
   if not f then -- (io.open's reason begins with the file's name)
-    error(("json: cannot write '%s': %s"):format(file, (tostring(why):gsub("^" .. file:gsub("%p", "%%%0") .. ": ", ""))), 2)
+    error(("json: cannot write '%s': %s"):format(file, (tostring(why):gsub("^" .. file:gsub("%p", "%%%0") .. ": ", ""))), 0)
   end
   f:write(text, "\n")
   f:close()

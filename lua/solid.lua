@@ -16,45 +16,44 @@
 local report = require "blocklim.report"
 
 return function(M)
-  -- level: 3 blames the caller of box or extrude when they call fail
-  -- themselves; their helpers pass 4
-  local function fail(fn, msg, level) error(fn .. ": " .. msg, level or 3) end
+  -- (no position: the messages name the command and the field, guide 2)
+  local function fail(fn, msg) error(fn .. ": " .. msg, 0) end
 
   local function number_list(fn, t, k, n, positive)
     local v = t[k]
     if type(v) ~= "table" or #v ~= n then
       fail(fn, ("field '%s' must be a list of %d numbers, got %s"):format(k, n,
-           type(v) == "table" and ("%d"):format(#v) or type(v)), 4)
+           type(v) == "table" and ("%d"):format(#v) or type(v)))
     end
     for i = 1, n do
       if type(v[i]) ~= "number" or v[i] ~= v[i] or math.abs(v[i]) == math.huge
          or (positive and not (v[i] > 0)) then
         fail(fn, ("field '%s' entry %d must be a %snumber, got %s"):format(k, i,
-             positive and "positive " or "finite ", report.show(v[i])), 4)
+             positive and "positive " or "finite ", report.show(v[i])))
       end
     end
     return v
   end
 
   local function check(fn, t, allowed)
-    if type(t) ~= "table" then fail(fn, "expects a table of named fields, got " .. type(t), 4) end
+    if type(t) ~= "table" then fail(fn, "expects a table of named fields, got " .. type(t)) end
     for k in pairs(t) do
       if not allowed[k] then
         local names = {}
         for name in pairs(allowed) do names[#names + 1] = name end
         table.sort(names)
-        fail(fn, ("unknown field '%s' (fields: %s)"):format(tostring(k), table.concat(names, ", ")), 4)
+        fail(fn, ("unknown field '%s' (fields: %s)"):format(tostring(k), table.concat(names, ", ")))
       end
     end
     local m = M.current()
-    if not m then fail(fn, "no current model; start one with model{ dim = 3 }", 4) end
-    if m:dim() ~= 3 then fail(fn, "makes 3D blocks; start a model with model{ dim = 3 }", 4) end
+    if not m then fail(fn, "no current model; start one with model{ dim = 3 }") end
+    if m:dim() ~= 3 then fail(fn, "makes 3D blocks; start a model with model{ dim = 3 }") end
   end
 
   -- a field that is true or false, if given
   local function flag(fn, t, k)
     if t[k] ~= nil and type(t[k]) ~= "boolean" then
-      fail(fn, ("field '%s' must be true or false, got %s"):format(k, report.show(t[k])), 4)
+      fail(fn, ("field '%s' must be true or false, got %s"):format(k, report.show(t[k])))
     end
   end
 
@@ -63,7 +62,7 @@ return function(M)
     local v = math.type(t[k]) and math.tointeger(t[k])
     if not v or v < (min or 1) then
       fail(fn, ("field '%s' must be an integer of at least %d, got %s"):format(k, min or 1,
-           report.show(t[k])), 4)
+           report.show(t[k])))
     end
     return v
   end

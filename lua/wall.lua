@@ -14,7 +14,7 @@ local report = require "blocklim.report"
 return function(M)
   local allowed = { courses = true, unit = true, base = true, origin = true,
                     density = true, thickness = true, depth = true }
-  local function fail(msg) error("wall: " .. msg, 3) end
+  local function fail(msg) error("wall: " .. msg, 0) end
 
   return function(t)
     if type(t) ~= "table" then fail("expects a table of fields, got " .. type(t)) end
