@@ -121,10 +121,10 @@ return function(M, check_solve)
         fail(("methods[%d] must be a method name or a table, got %s"):format(i, type(entry)))
       end
       for k, v in pairs(common) do
-        if fields[k] == nil and takes(fields.method, fields.flow or common.flow, fields.start or common.start,
-                                      fields.complementarity or common.complementarity, k) then
-          fields[k] = v
+        if takes(fields.method, fields.flow or common.flow, fields.start or common.start,
+                 fields.complementarity or common.complementarity, k) then
           taken[k] = true
+          if fields[k] == nil then fields[k] = v end
         end
       end
       if fields.method == "assoc" and fields.flow == nil then fields.flow = "associative" end
@@ -140,7 +140,7 @@ return function(M, check_solve)
       end
       plans[i] = fields
     end
-    -- a field that no row takes would do nothing (nor be checked)
+    -- a field that no row's method takes would do nothing (nor be checked)
     for k in pairs(common) do
       if not taken[k] then
         fail(("field '%s' goes with none of the rows' methods (solve{} refuses it with each)"):format(k))

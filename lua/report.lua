@@ -240,11 +240,12 @@ function Result.__tostring(r)
       local h = r.history[k]
       if #h > 1 then last[st.continues or k] = h[#h] end
     end
-    local stops, above = {}, false
+    local stops, above, huge = {}, false, true
     for k = 1, #r.starts do
       if last[k] then
         stops[#stops + 1] = ("%.6g"):format(last[k])
         above = above or last[k] > r.alpha_assoc
+        huge = huge and last[k] > 1e6
       end
     end
     if #stops > 0 then
@@ -260,7 +261,12 @@ function Result.__tostring(r)
         say("  forces times mu, fixed, where Coulomb's law ties friction to each LP's own forces)")
       end
     end
-    if r.status == "not certified" and not (r.note and r.note:find("no equilibrium", 1, true)) then
+    if r.status == "not certified" and r.alpha_assoc == math.huge and #stops > 0 and huge then
+      -- wedged: with dilatancy nothing moves, and no start found a
+      -- mechanism without it (a flyer pushed against its wall)
+      say("  every start ended above a million times the live load: with dilatancy no mechanism")
+      say("  moves, and most likely none moves without it either, which the sequence cannot prove")
+    elseif r.status == "not certified" and not (r.note and r.note:find("no equilibrium", 1, true)) then
       -- the settings that certified such runs (doc/guide.md, "Large
       -- models"); none gives an equilibrium that the capacities lack
       say("  other settings send the sequence another way: solve again with settle = 1e-3,")
@@ -314,9 +320,9 @@ function Result.__tostring(r)
     elseif r.verified and i.status ~= "solved" and i.status ~= "solved to acceptable level" then
       say("  (Ipopt gave up, but its last point passes every check below: it is the answer)")
     elseif r.status == "not complementary" and r.flow == "nonassociative" and r.rigid_joints then
-      say("  (the program holds rigid joints' slip at zero and lets shear cross one that opens,")
-      say("  which the non-associative flow forbids: start = \"seqlp\" gives the sequence's")
-      say("  answer, which models them; doc/theory.md 6.1)")
+      say("  (the model has rigid joints, which may be why: the program holds their slip at zero and")
+      say("  lets shear cross one that opens, which the non-associative flow forbids; start = \"seqlp\"")
+      say("  gives the sequence's answer, which models them; doc/theory.md 6.1)")
     end
   elseif r.method == "seqlp" and r.lps > 1 then -- (iterations summed over r.lps LPs)
     say("  %s flow, seqlp method, %s LP: %d iterations over the %d LPs", r.flow, r.lp, r.iterations, r.lps)

@@ -282,16 +282,20 @@ int bl_joint_check(const bl_model *m, const bl_joint_spec *s, bl_error *err)
                  * wider each side) is not */
                 double back = fmax(depth_at(blk[j], m->dim, bl_v3_add(q, bl_v3_scale(nu, -d))),
                                    depth_at(blk[j], m->dim, bl_v3_sub(q, bl_v3_scale(nu, -d))));
-                double tilt = tilt_at(blk[j], m->dim, q, nu);
-                if (back < -fmax(tol, 1e-3 * -d) && tilt < 45.0)
+                double tilt = back < -fmax(tol, 1e-3 * -d) ? tilt_at(blk[j], m->dim, q, nu) : -1.0;
+                if (tilt >= 0.0 && tilt < 45.0) {
+                    char deg[32];
+                    snprintf(deg, sizeof deg, "%.2g", tilt);
                     return bl_error_set(err,
                                         "interface: point %d of field 'points' lies %.3g outside "
-                                        "block %d, and the joint%s %.2g degrees from the block's "
+                                        "block %d, and the joint%s %s degree%s from the block's "
                                         "%s there; a declared joint must lie on the %s of both blocks",
                                         i + 1, -d, (j ? s->b : s->a) + 1,
-                                        m->dim == 3 ? "'s plane tilts" : " tilts", tilt,
-                                        m->dim == 3 ? "face" : "edge", m->dim == 3 ? "faces" : "edges");
-                if (back < -fmax(tol, 1e-3 * -d))
+                                        m->dim == 3 ? "'s plane tilts" : " tilts", deg,
+                                        strcmp(deg, "1") == 0 ? "" : "s", m->dim == 3 ? "face" : "edge",
+                                        m->dim == 3 ? "faces" : "edges");
+                }
+                if (tilt >= 0.0)
                     return bl_error_set(err,
                                         "interface: point %d of field 'points' lies %.3g beyond the "
                                         "%s of block %d, along the joint; a declared joint must not "

@@ -10,6 +10,7 @@
 
 #define DEFAULT_WIDTH 1000
 #define SHOW_FRACTION 0.08  /* largest drawn displacement / model size */
+#define SHOW_TURN 0.15      /* radians: the largest drawn rotation of a block */
 #define THIN_BLOCK 2.0      /* px: blocks thinner than this on average get no outlines */
 #define MAX_ASPECT 2.0      /* a tall model is shrunk rather than drawn taller */
 #define ARROW 0.06          /* a load's arrow, of the canvas's width */
@@ -287,6 +288,19 @@ static double max_speed(const bl_solution *s)
     return maxd;
 }
 
+/* The largest angular speed of a free block. */
+static double max_turn(const bl_solution *s)
+{
+    const bl_model *m = s->model;
+    double w = 0.0;
+    for (int b = 0; b < m->nblocks; b++) {
+        if (m->blocks[b].support) continue;
+        const double *u = s->u + (m->dim == 3 ? 6 * b : 3 * b);
+        w = fmax(w, m->dim == 3 ? sqrt(u[3] * u[3] + u[4] * u[4] + u[5] * u[5]) : fabs(u[2]));
+    }
+    return w;
+}
+
 static void grow(double box[4], bl_vec2 q)
 {
     box[0] = fmin(box[0], q.x);
@@ -321,6 +335,12 @@ static void extent(pic *P, double box[4])
     P->maxd = bl_solution_moves(P->s) ? max_speed(P->s) : 0.0;
     double size = bl_model_size(m);
     P->k = P->maxd > 0.0 && size > 0.0 ? SHOW_FRACTION * size / P->maxd : 0.0;
+    /* and no block turned by more than SHOW_TURN: each moves rigidly over
+     * "time" k, so blocks hinged together part at the hinge by about
+     * (k w)^2 / 2 of their size (a flying buttress's short links drawn
+     * turned by 0.8 rad came apart at their hinges) */
+    double turn = P->k > 0.0 ? max_turn(P->s) : 0.0;
+    if (turn * P->k > SHOW_TURN) P->k = SHOW_TURN / turn;
     box[0] = box[1] = INFINITY;
     box[2] = box[3] = -INFINITY;
     for (int b = 0; m->dim == 3 && b < m->nblocks; b++) {

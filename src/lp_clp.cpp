@@ -50,7 +50,7 @@ struct clp_lp {
     bool solved = false;
     bool objective_changed = false; // the next solve: primal, from the basis
     bool feasibility = false;       // no objective: the dual simplex from the start
-    bool unscaled = false;          // the next solve: primal, from the basis, unscaled
+    bool unscaled = false;          // the next solve: primal_unscaled
     std::vector<double> x, y, ray;
     int iterations = 0;
     bool late = false; // the last solve stopped at the deadline
@@ -129,6 +129,16 @@ static void set_objective(void *e, const double *obj)
     lp->objective_changed = true;
 }
 
+// The primal simplex on the unscaled problem, from the current values
+// (CLP's values pass), CLP's own scaling kept for later solves.
+static void primal_unscaled(clp_lp *lp)
+{
+    int scaling = lp->model.scalingFlag();
+    lp->model.scaling(0);
+    lp->model.primal(1);
+    lp->model.scaling(scaling);
+}
+
 static bl_lp_status solve(void *e)
 {
     clp_lp *lp = static_cast<clp_lp *>(e);
@@ -144,10 +154,7 @@ static bl_lp_status solve(void *e)
         // 0.73 s where the check holds, 1.4 s against 5.9 s where it fails
         // (doc/theory.md 8).
         if (lp->unscaled) {
-            int scaling = lp->model.scalingFlag();
-            lp->model.scaling(0);
-            lp->model.primal(1);
-            lp->model.scaling(scaling);
+            primal_unscaled(lp);
             lp->unscaled = false;
         } else if ((lp->solved || lp->feasibility) && !lp->objective_changed) lp->model.dual(0);
         else lp->model.primal(0);
@@ -156,13 +163,10 @@ static bl_lp_status solve(void *e)
         lp->iterations = lp->model.numberIterations();
         // "Optimal" for CLP's internally scaled problem can leave primal or
         // dual infeasibilities in the unscaled one (secondary status 2-4,
-        // met on an arch with cohesion): finish from that basis unscaled.
+        // met on an arch with cohesion): finish from there unscaled.
         if (lp->model.status() == 0 && lp->model.secondaryStatus() >= 2 &&
             lp->model.secondaryStatus() <= 4) {
-            int scaling = lp->model.scalingFlag();
-            lp->model.scaling(0);
-            lp->model.primal(1);
-            lp->model.scaling(scaling);
+            primal_unscaled(lp);
             lp->iterations += lp->model.numberIterations();
         }
     } catch (...) {
@@ -199,7 +203,7 @@ static bl_lp_status solve(void *e)
     }
 }
 
-// Tighter tolerances, and the primal simplex from the basis next, on the
+// Tighter tolerances, and the primal simplex from the answer next, on the
 // unscaled problem: the reduced costs it left within the old tolerance may
 // now price in (scaled, they need not: a wall of 1,406 blocks kept an
 // admissibility of 1.4e-6 at 1e-11, and met 4e-9 unscaled in 26 pivots).

@@ -841,7 +841,7 @@ int bl_mpec_solve(bl_model *m, const bl_mpec_options *o, bl_solution **out, bl_e
     int converged = s->status == BL_OPTIMAL || s->status == BL_UNSTABLE;
     /* Ipopt's own failures do not make its point wrong: one that passes
      * every check is an answer (a pier cold ended "restoration failed"
-     * after 1,195 iterations at b/h, every residual at round-off); its
+     * after 1,189 iterations at b/h, every residual at round-off); its
      * limits and Ctrl-C stay statuses */
     if (!converged && s->verified && s->status != BL_ITERATION_LIMIT && s->status != BL_TIME_LIMIT &&
         s->status != BL_INTERRUPTED) {

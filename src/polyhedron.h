@@ -30,9 +30,10 @@ bl_vec3 bl_v3_unit(bl_vec3 a);
  * longest's; where the edges within 1e-9 of the longest lie along two
  * directions at an acute angle (an isosceles trapezoid's legs), its
  * bisector, which no round-off in their lengths turns; where they are
- * square to each other (a square's sides, along which its pyramid's
- * facets stay, as they do on a rectangle), or along three or more
- * directions, the first's.  A unit vector. */
+ * square to each other (a square's sides: a pyramid of 4k facets is the
+ * same along either), or along three or more directions (a regular
+ * hexagon: the order of e decides, doc/theory.md 7), the first's.  A unit
+ * vector. */
 bl_vec3 bl_longest_direction(const bl_vec3 *e, int n);
 
 typedef struct bl_polyhedron {

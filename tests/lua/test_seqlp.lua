@@ -893,4 +893,22 @@ do
   T.eq(select(2, pcall(solve, { mechanisms = { a } })):gsub("^.-:%d+: ", ""),
        "solve: field 'mechanisms' entry 1 is a result of a 2D model, this one is 3D", "a 2D mechanism for a 3D model: refused")
 end
+-- Restarts whose random stress state cannot be drawn are skipped and
+-- counted: a block 1 x 0.5 on a 45-degree slope (mu = 1.5) pushed down it
+-- slides at (1 + a) = 1.5 (1 - a), a = 0.2; a small model plans start 1
+-- and 20 restarts (guide 5), the starts run and the skipped ones add up
+-- to them, and print(r) says how many were skipped.
+do
+  model { mu = 1.5 }
+  local c, s = math.cos(math.rad(45)), math.sin(math.rad(45))
+  local function rot(p) return { p[1] * c - p[2] * s, p[1] * s + p[2] * c } end
+  block { vertices = { rot { 0, 0 }, rot { 1, 0 }, rot { 1, 0.5 }, rot { 0, 0.5 } } }
+  block { vertices = { rot { -1, -1 }, rot { 2, -1 }, rot { 2, 0 }, rot { -1, 0 } }, support = true }
+  load { live = "horizontal", direction = { -1, 0 } }
+  local sk = solve { progress = false }
+  T.ok(sk.certified and math.abs(sk.alpha - 0.2) <= 1e-9 and #sk.starts + sk.skipped == 21 and sk.skipped > 0 and
+       tostring(sk):find(("%d restarts? skipped"):format(sk.skipped)) ~= nil,
+       "a block sliding down a slope: 0.2, and the starts run and skipped add up to start 1 and 20 restarts",
+       ("%s %d starts, %d skipped"):format(tostring(sk.alpha), #sk.starts, sk.skipped))
+end
 T.done()
