@@ -134,15 +134,23 @@ end
 -- computed by the verification from the forces and the mechanism, hold to
 -- 1e-8 and its work balance to 1e-6.  (0.3 thick did so until the frames
 -- of joints whose longest edges tie were set by their bisector, stop 53;
--- it now converges in 36 iterations.)
-model { dim = 3, mu = 0.65 }
-dome { radius = 5, thickness = 0.28, rings = 20, segments = 100 }
-local d2k = solve { flow = "associative", lp = "ipm" }
-local e = d2k.residuals
-T.ok(d2k.status == "optimal" and e and e.equilibrium <= 1e-8 and e.complementarity <= 1e-8 and e.work <= 1e-6,
-     "dome of 2,000 voussoirs, interior point: an answer, in equilibrium and complementary to 1e-8",
-     e and ("%s eq %.1e comp %.1e work %.1e"):format(d2k.status, e.equilibrium, e.complementarity, e.work)
-       or d2k.status)
+-- it now converges in 36 iterations.)  Solved by a second blocklim with
+-- verbose = true, whose lines show that the best iterate was taken.
+do
+  local script = 'model { dim = 3, mu = 0.65 } dome { radius = 5, thickness = 0.28, rings = 20, segments = 100 } '
+    .. 'local r = solve { flow = "associative", lp = "ipm", verbose = true, progress = false } '
+    .. 'local e = r.residuals or { equilibrium = 1, complementarity = 1, work = 1 } '
+    .. 'print(("RESULT %s %.3e %.3e %.3e"):format(r.status, e.equilibrium, e.complementarity, e.work))'
+  local p = assert(io.popen(("%q -e %q 2>&1"):format(arg[-1], script)))
+  local out = p:read("a")
+  p:close()
+  local status, eq, comp, work = out:match("RESULT (%S+) (%S+) (%S+) (%S+)")
+  eq, comp, work = tonumber(eq), tonumber(comp), tonumber(work)
+  T.ok(status == "optimal" and eq and eq <= 1e-8 and comp <= 1e-8 and work <= 1e-6 and
+       out:find("lost their feasibility: the best one", 1, true) ~= nil,
+       "dome of 2,000 voussoirs, interior point: the best iterate taken, in equilibrium and complementary to 1e-8",
+       out:match("RESULT[^\n]*") or out:sub(-300))
+end
 -- The simplex stops within its tolerances on its scaled problem, which
 -- left a church façade's mechanism interpenetrating by 1.2e-7 of its
 -- largest motion (16 units wide, 30 courses in running bond, a door and
