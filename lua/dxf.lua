@@ -168,7 +168,8 @@ function M.read(text, where, fail, step)
   end
   local cp1252 = version < "AC1021" and codepage:upper() == "ANSI_1252"
   -- layers frozen (flag 1) or off (a negative colour): what lies on them
-  -- is not shown, and not taken
+  -- is not shown, and not taken; by the name in capitals (layer names
+  -- ignore case, as blocks' do)
   local hidden = {}
   for _, l in ipairs(layers) do
     local name, frozen, off
@@ -177,7 +178,7 @@ function M.read(text, where, fail, step)
       if p.code == 70 then frozen = (math.tointeger(tonumber(p.value)) or 0) & 1 == 1 end
       if p.code == 62 then off = (tonumber(p.value) or 0) < 0 end
     end
-    if name and (frozen or off) then hidden[name] = frozen and "a frozen layer" or "a layer turned off" end
+    if name and (frozen or off) then hidden[name:upper()] = frozen and "a frozen layer" or "a layer turned off" end
   end
 
   local shapes, skipped, digits = {}, {}, {}
@@ -322,7 +323,8 @@ function M.read(text, where, fail, step)
   end
   local function add(e, f, pts, T, into, inside)
     if f.paper then return skip(e, what(e, f.layer) .. " in paper space", inside) end
-    if hidden[f.layer] then return skip(e, ("%s, %s"):format(what(e, f.layer), hidden[f.layer]), inside) end
+    local why = hidden[f.layer:upper()]
+    if why then return skip(e, ("%s, %s"):format(what(e, f.layer), why), inside) end
     local kept = {}
     for _, q in ipairs(pts) do
       local r = kept[#kept]
@@ -370,6 +372,11 @@ function M.read(text, where, fail, step)
     end
     local via = into and (" (%s)"):format(into.via) or ""
     if paper then return skip(e, what(e, layer) .. " in paper space", inside) end
+    -- an INSERT on a frozen layer hides all it places, whatever their own
+    -- layers (turned off, only what it places on layer 0, which takes its)
+    if hidden[layer:upper()] == "a frozen layer" then
+      return skip(e, ("%s, a frozen layer"):format(what(e, layer)), inside)
+    end
     if not name then
       fail(("%s%s: %s without its block's name (group 2)"):format(where(e.line), via, what(e, layer)))
     end

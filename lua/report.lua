@@ -22,6 +22,10 @@ local VELOCITY = setmetatable({}, { __mode = "k" })
 local function g(x)
   return ("%.3g"):format(x)
 end
+-- The tolerance of the non-associative flow rule's residuals: the slip
+-- threshold, up to 1e-3 (BL_FLOW_TOL_MAX in src/verify.h; doc/theory.md 6,
+-- "Verification of a non-associative answer").
+local function flow_tolerance(r) return math.min(r.slip, 1e-3) end
 
 function Result.__tostring(r)
   local out = {}
@@ -299,7 +303,7 @@ function Result.__tostring(r)
       -- why: the residuals above their tolerance (r.ipopt.residuals; the
       -- flow rule's without dilatancy against the slip threshold, below), or none
       local over, e = {}, i.residuals or {}
-      local ftol = e.flow and math.min(r.slip, 1e-3) or r.tolerance
+      local ftol = e.flow and flow_tolerance(r) or r.tolerance
       for _, k in ipairs { "equilibrium", "yield", "admissibility", "normalization", "complementarity",
                            "work", "flow", "dilatancy" } do
         local v, tol = e[k], (k == "complementarity" or k == "work" or k == "flow" or k == "dilatancy")
@@ -390,10 +394,7 @@ function Result.__tostring(r)
     say("  residuals (scaled, tolerance %s): equilibrium %s, yield %s, admissibility %s,",
         g(r.tolerance), g(e.equilibrium), g(e.yield), g(e.admissibility))
     if e.flow then
-      -- the flow rule's residuals are judged against the slip threshold
-      -- (doc/theory.md 6, "Verification of a non-associative answer")
-      -- (their tolerance is the threshold up to 1e-3, BL_FLOW_TOL_MAX in src/verify.h)
-      local ftol = math.min(r.slip, 1e-3)
+      local ftol = flow_tolerance(r)
       say("    normalization %s; the flow rule's (slip threshold %s%s): complementarity %s,",
           g(e.normalization), g(r.slip), ftol < r.slip and ", tolerance " .. g(ftol) or "", g(e.complementarity))
       say("    work %s, flow %s, dilatancy %s", g(e.work), g(e.flow), g(e.dilatancy))

@@ -1691,12 +1691,15 @@ int bl_seqlp_solve(bl_model *m, const bl_seqlp_options *o, bl_solution **out, bl
                  * cannot be drawn (no equilibrium at that alpha, or an LP
                  * the interior point does not finish: the 10,050-block
                  * wall's, doc/seqlp.md 14) only skips this restart */
-                if (st == BL_LP_INTERRUPTED || st == BL_LP_TIME_LIMIT) stop = st;
-                else s->skipped++;
-                if (st != BL_LP_INTERRUPTED && st != BL_LP_TIME_LIMIT && st != BL_LP_INFEASIBLE && !r.found)
-                    snprintf(s->note, sizeof s->note,
-                             "restart %d: the LP of its random stress state ended with %s", k,
-                             bl_status_name(bl_status_of_lp(st)));
+                if (st == BL_LP_INTERRUPTED || st == BL_LP_TIME_LIMIT) {
+                    stop = st;
+                } else {
+                    s->skipped++;
+                    if (st != BL_LP_INFEASIBLE && !r.found)
+                        snprintf(s->note, sizeof s->note,
+                                 "restart %d: the LP of its random stress state ended with %s", k,
+                                 bl_status_name(bl_status_of_lp(st)));
+                }
                 continue;
             }
         }

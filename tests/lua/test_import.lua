@@ -682,6 +682,23 @@ local hid = import { file = write(".dxf", "0\nSECTION\n2\nTABLES\n0\nTABLE\n2\nL
 T.ok(#hid == 2 and tostring(hid.skipped):find("layer 'frame', a frozen layer", 1, true)
      and tostring(hid.skipped):find("layer 'aux', a layer turned off", 1, true),
      "DXF: polylines on frozen and switched-off layers left out, and said so", tostring(hid.skipped))
+-- ... whatever the case of the layer's name in its table (a tester's FRAME
+-- and AUX, frozen and off, let 'frame' and 'Aux' in), and an INSERT on a
+-- frozen layer hides all it places, also what lies on other layers (its
+-- block's stone on layer 'stone' was taken)
+model { mu = 0.6 }
+hid = import { file = write(".dxf", "0\nSECTION\n2\nTABLES\n0\nTABLE\n2\nLAYER\n70\n2\n"
+  .. "0\nLAYER\n2\nFRAME\n70\n1\n62\n7\n0\nLAYER\n2\nAUX\n70\n0\n62\n-3\n0\nENDTAB\n0\nENDSEC\n"
+  .. "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nextra\n10\n0\n20\n0\n"
+  .. lw("stone", { { 5, 5 }, { 6, 5 }, { 6, 6 }, { 5, 6 } }) .. "0\nENDBLK\n0\nENDSEC\n"
+  .. "0\nSECTION\n2\nENTITIES\n" .. lw("stone", sq) .. lw("frame", { { -5, -5 }, { 5, -5 }, { 5, 5 }, { -5, 5 } })
+  .. lw("Aux", { { 0, 0 }, { 0.5, 0 }, { 0.5, 0.5 } }) .. "0\nINSERT\n8\nframe\n2\nextra\n10\n0\n20\n0\n"
+  .. lw("ground", { { -1, -1 }, { 2, -1 }, { 2, 0 }, { -1, 0 } }) .. "0\nENDSEC\n0\nEOF\n"), support = "ground" }
+T.ok(#hid == 2 and tostring(hid.skipped):find("LWPOLYLINE on layer 'frame', a frozen layer", 1, true)
+     and tostring(hid.skipped):find("layer 'Aux', a layer turned off", 1, true)
+     and tostring(hid.skipped):find("INSERT on layer 'frame', a frozen layer", 1, true),
+     "DXF: hidden layers named in capitals in their table, and an INSERT on a frozen one, left out",
+     tostring(hid.skipped))
 
 -- Blocks nested 40 deep: refused at the 33rd INSERT, the message naming
 -- the three innermost placements and the depth (it listed all of them)
