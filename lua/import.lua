@@ -170,6 +170,10 @@ return function(M)
   -- The pairs whose boxes meet come from a grid of cells about a shape's
   -- size; a shape over more than MANY cells (a frame) meets every other.
   local MANY = 4096
+  -- " (layer 'x')" or " (object 'x')", a shape's name in a message
+  local function named(s, format)
+    return s.name ~= "" and (" (%s '%s')"):format(format == "dxf" and "layer" or "object", s.name) or ""
+  end
   local function inside_another(shapes, eps, own, where, format)
     local box, span = {}, 0
     for i, s in ipairs(shapes) do
@@ -182,9 +186,6 @@ return function(M)
       span = span + (b[3] - b[1] + b[4] - b[2]) / 2
     end
     local cell = math.max(span / #shapes, eps)
-    local function label(s)
-      return s.name ~= "" and (" (%s '%s')"):format(format == "dxf" and "layer" or "object", s.name) or ""
-    end
     local checked = {}
     local function check(i, j)
       local key = i < j and i * (#shapes + 1) + j or j * (#shapes + 1) + i
@@ -193,13 +194,29 @@ return function(M)
       local a, b = box[i], box[j]
       local e = math.max(eps, 10 * own(shapes[i]), 10 * own(shapes[j]))
       if not (b[1] < a[3] - e and a[1] < b[3] - e and b[2] < a[4] - e and a[2] < b[4] - e) then return end
+      -- one shape drawn twice (no corner of either lies inside the other):
+      -- every corner of each on one of the other's
+      local function corners_on(s, t)
+        for _, q in ipairs(s.points) do
+          local near = false
+          for _, p in ipairs(t.points) do near = near or (math.abs(p[1] - q[1]) <= e and math.abs(p[2] - q[2]) <= e) end
+          if not near then return false end
+        end
+        return true
+      end
+      if math.abs(a[1] - b[1]) <= e and math.abs(a[2] - b[2]) <= e and math.abs(a[3] - b[3]) <= e and
+         math.abs(a[4] - b[4]) <= e and corners_on(shapes[i], shapes[j]) and corners_on(shapes[j], shapes[i]) then
+        local first, again = shapes[math.min(i, j)], shapes[math.max(i, j)]
+        fail(("%s%s draws the shape of line %d%s again: two blocks would overlap; leave one out")
+             :format(where(again.line), named(again, format), first.line, named(first, format)))
+      end
       for _, pair in ipairs { { i, j }, { j, i } } do
         local outer, inner = shapes[pair[1]], shapes[pair[2]]
         for _, q in ipairs(inner.points) do
           if deep_inside(q, outer.points, e) then
             fail(("%s%s has a corner inside the shape of line %d%s: a block has no holes, and blocks may not "
                   .. "overlap; draw a stone with a hole as pieces, and leave drawing aids (a frame) out with "
-                  .. "'layers'"):format(where(inner.line), label(inner), outer.line, label(outer)))
+                  .. "'layers'"):format(where(inner.line), named(inner, format), outer.line, named(outer, format)))
           end
         end
       end
@@ -379,9 +396,10 @@ return function(M)
         for _, p in ipairs(s.points) do
           if math.abs(p[w] - level) > eps then
             local c = ("xyz"):sub(w, w)
-            fail(("%s%s: a point at %s = %.9g, off the plane %s = %.9g of the first shape: a 2D model takes "
-                  .. "shapes drawn in one plane, here the %s plane%s"):format(where(s.line),
-                  s.via and " (" .. s.via .. ")" or "", c, p[w], c, level,
+            fail(("%s%s%s: a point at %s = %.9g, off the plane %s = %.9g through the first point of the first "
+                  .. "shape, line %d%s: a 2D model takes shapes drawn in one plane, here the %s plane%s")
+                  :format(where(s.line), named(s, format), s.via and " (" .. s.via .. ")" or "", c, p[w], c,
+                  level, shapes[1].line, named(shapes[1], format),
                   ("xyz"):sub(u, u) .. "-" .. ("xyz"):sub(v, v),
                   format == "obj" and " (field 'plane': \"xy\", \"xz\" or \"yz\")" or ""))
           end

@@ -457,7 +457,19 @@ local function lw(layer, pts, extra)
   return table.concat(out)
 end
 local sq = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } }
+-- a stone drawn twice (a common slip: no corner of either lies inside the
+-- other, and the solve found the blocks overlapping, naming no line), and
+-- a shape off the first's plane, are refused naming both lines and layers
+-- (each polyline of 4 corners takes 24 lines, after the 10 of the sections)
 model {}
+T.raises(function()
+  import { file = write(".dxf", dxf("", lw("stones", sq) .. lw("stones", { { 1, 1 }, { 0, 1 }, { 0, 0 }, { 1, 0 } }))) }
+end, "DXF: a stone drawn twice", "line 35 (layer 'stones') draws the shape of line 11 (layer 'stones') again")
+T.raises(function()
+  import { file = write(".dxf", dxf("", lw("stones", sq) .. lw("ground", { { -1, -1 }, { 2, -1 }, { 2, 0 } }, "38\n5\n"))) }
+end, "DXF: a shape off the first's plane", "line 35 (layer 'ground'): a point at z = 5",
+     "the first shape, line 11 (layer 'stones')")
+T.eq(stats().blocks + stats().supports, 0, "DXF refused: the model as it was")
 local cad = import { file = write(".dxf", dxf("9\n$ACADVER\n1\nAC1015\n9\n$DWGCODEPAGE\n3\nANSI_1252\n",
   lw("Stein_\228", { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 0, 0 } })
   .. lw("frame", { { -5, -5 }, { 5, -5 }, { 5, 5 } }, "67\n1\n")
