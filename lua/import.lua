@@ -174,6 +174,15 @@ return function(M)
   local function named(s, format)
     return s.name ~= "" and (" (%s '%s')"):format(format == "dxf" and "layer" or "object", s.name) or ""
   end
+  -- whether every corner of shape s lies within e of one of shape t's
+  local function corners_on(s, t, e)
+    for _, q in ipairs(s.points) do
+      local near = false
+      for _, p in ipairs(t.points) do near = near or (math.abs(p[1] - q[1]) <= e and math.abs(p[2] - q[2]) <= e) end
+      if not near then return false end
+    end
+    return true
+  end
   local function inside_another(shapes, eps, own, where, format)
     local box, span = {}, 0
     for i, s in ipairs(shapes) do
@@ -196,16 +205,8 @@ return function(M)
       if not (b[1] < a[3] - e and a[1] < b[3] - e and b[2] < a[4] - e and a[2] < b[4] - e) then return end
       -- one shape drawn twice (no corner of either lies inside the other):
       -- every corner of each on one of the other's
-      local function corners_on(s, t)
-        for _, q in ipairs(s.points) do
-          local near = false
-          for _, p in ipairs(t.points) do near = near or (math.abs(p[1] - q[1]) <= e and math.abs(p[2] - q[2]) <= e) end
-          if not near then return false end
-        end
-        return true
-      end
       if math.abs(a[1] - b[1]) <= e and math.abs(a[2] - b[2]) <= e and math.abs(a[3] - b[3]) <= e and
-         math.abs(a[4] - b[4]) <= e and corners_on(shapes[i], shapes[j]) and corners_on(shapes[j], shapes[i]) then
+         math.abs(a[4] - b[4]) <= e and corners_on(shapes[i], shapes[j], e) and corners_on(shapes[j], shapes[i], e) then
         local first, again = shapes[math.min(i, j)], shapes[math.max(i, j)]
         fail(("%s%s draws the shape of line %d%s again: two blocks would overlap; leave one out")
              :format(where(again.line), named(again, format), first.line, named(first, format)))
