@@ -184,11 +184,12 @@ function M.read(text, where, fail, step)
   local shapes, skipped, digits = {}, {}, {}
   local function what(e, layer) return ("%s on layer '%s'"):format(e.type, layer) end
   -- a number of entity e; a polyline's coordinates (counted) also add their
-  -- decimals to `digits`
+  -- decimals to `digits`.  A bad value is named by its own line, the one
+  -- after its group code's (an editor then lands on it)
   local function number(e, p, layer, counted)
     local v = not p.value:find("[xXnN]") and tonumber(p.value)
     if not finite(v) then
-      fail(("%s: %s: group %d must be a finite decimal number, got '%s'"):format(where(p.line), what(e, layer),
+      fail(("%s: %s: group %d must be a finite decimal number, got '%s'"):format(where(p.line + 1), what(e, layer),
            p.code, p.value))
     end
     if counted and not p.value:find("[eE]") then
@@ -200,7 +201,7 @@ function M.read(text, where, fail, step)
   local function integer(e, p, layer, name)
     local v = math.tointeger(number(e, p, layer))
     if not v then
-      fail(("%s: %s: group %d (%s) must be an integer, got '%s'"):format(where(p.line), what(e, layer), p.code,
+      fail(("%s: %s: group %d (%s) must be an integer, got '%s'"):format(where(p.line + 1), what(e, layer), p.code,
            name, p.value))
     end
     return v

@@ -336,11 +336,11 @@ refused(2, { file = write(".dxf", E0 .. "0\nVERTEX\n8\nA\n10\n0\n20\n0\n0\nENDSE
 refused(2, { file = write(".dxf", E0 .. "0\nPOLYLINE\n8\nA\n70\n5\n0\nSEQEND\n0\nENDSEC\n0\nEOF\n") },
         "a spline-fit POLYLINE", "line 5", "spline-fit")
 refused(2, { file = write(".dxf", E0 .. square:gsub("70\n1\n", "70\n1.5\n") .. "0\nENDSEC\n0\nEOF\n") },
-        "a polyline whose flags are 1.5", "line 11", "group 70 (flags) must be an integer")
+        "a polyline whose flags are 1.5", "line 12", "group 70 (flags) must be an integer") -- (its value's line)
 refused(2, { file = write(".dxf", E0 .. square:gsub("20\n1\n10\n0\n20\n1\n", "10\n0\n20\n1\n") .. "0\nENDSEC\n0\nEOF\n") },
         "a point without its y", "without its y")
 refused(2, { file = write(".dxf", E0 .. square:gsub("10\n1\n20\n0\n", "10\n0x10\n20\n0\n") .. "0\nENDSEC\n0\nEOF\n") },
-        "a hexadecimal coordinate", "group 10 must be a finite decimal number, got '0x10'")
+        "a hexadecimal coordinate", "line 18", "group 10 must be a finite decimal number, got '0x10'")
 refused(2, { file = write(".dxf", E0 .. square:gsub("70\n1\n", "70\n1\n210\n1\n220\n0\n230\n0\n")
                           .. "0\nENDSEC\n0\nEOF\n") }, "a polyline drawn in the y-z plane", "other than the world's x-y")
 refused(2, { file = w1dxf, plane = "xz" }, "a plane for a DXF", "field 'plane' is for OBJ files")
