@@ -652,14 +652,20 @@ T.ok(d0.verified and d1.verified and math.abs(d0.alpha - d1.alpha) <= 1e-6 * d0.
 -- dome of 16 segments (symmetry turns), and the dome moved, give one
 -- alpha (along each joint's first edge they differed by up to 3e-4 and
 -- 2e-3)
-local sym = {}
-for _, case in ipairs { { 0, { 0, 0, 0 } }, { 45, { 0, 0, 0 } }, { 180, { 0, 0, 0 } }, { 0, { 3, -1.7, 2 } } } do
-  model { dim = 3, mu = 0.6 }
-  dome { radius = 2, thickness = 0.2, rings = 6, segments = 16, centre = case[2] }
-  local th = math.rad(case[1])
-  load { live = "horizontal", direction = { math.cos(th), math.sin(th) } }
-  sym[#sym + 1] = solve { flow = "associative" }.alpha
+-- (the associative alpha of a dome of radius 2 for each case: the load's
+-- angle in degrees, the dome's centre)
+local function dome_alphas(thickness, rings, cases)
+  local out = {}
+  for _, case in ipairs(cases) do
+    model { dim = 3, mu = 0.6 }
+    dome { radius = 2, thickness = thickness, rings = rings, segments = 16, centre = case[2] }
+    local th = math.rad(case[1])
+    load { live = "horizontal", direction = { math.cos(th), math.sin(th) } }
+    out[#out + 1] = solve { flow = "associative" }.alpha
+  end
+  return out
 end
+local sym = dome_alphas(0.2, 6, { { 0, { 0, 0, 0 } }, { 45, { 0, 0, 0 } }, { 180, { 0, 0, 0 } }, { 0, { 3, -1.7, 2 } } })
 for k = 2, 4 do
   T.near(sym[k], sym[1], 1e-7 * sym[1], ("dome of 6 rings of 16, 8-facet pyramid: case %d of 4 (turned 45, 180 degrees, moved) gives alpha at 0 degrees"):format(k))
 end
@@ -668,15 +674,8 @@ end
 -- round-off chose which one the frame followed (12 rings of 16: alpha
 -- moved by 1.5e-4 when the dome was turned a segment or moved); their
 -- bisector follows neither
-sym = {}
-for _, case in ipairs { { 0, { 0, 0, 0 } }, { 22.5, { 0, 0, 0 } }, { 180, { 0, 0, 0 } }, { 0, { 3, -1.7, 2 } },
-                        { 0, { 500, 300, 20 } } } do
-  model { dim = 3, mu = 0.6 }
-  dome { radius = 2, thickness = 0.4, rings = 12, segments = 16, centre = case[2] }
-  local th = math.rad(case[1])
-  load { live = "horizontal", direction = { math.cos(th), math.sin(th) } }
-  sym[#sym + 1] = solve { flow = "associative" }.alpha
-end
+sym = dome_alphas(0.4, 12, { { 0, { 0, 0, 0 } }, { 22.5, { 0, 0, 0 } }, { 180, { 0, 0, 0 } }, { 0, { 3, -1.7, 2 } },
+                            { 0, { 500, 300, 20 } } })
 for k = 2, 5 do
   T.near(sym[k], sym[1], 1e-7 * sym[1], ("dome of 12 rings of 16, thicker than its rings' chords: case %d of 5 (turned a segment, 180 degrees, moved twice) gives alpha at 0 degrees"):format(k))
 end
